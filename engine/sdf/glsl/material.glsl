@@ -1,0 +1,58 @@
+// Materials (thesis, Definition 2.2, plus emission) and distance samples that carry them.
+
+struct Material {
+    vec3 ambient;   // R_A
+    vec3 diffuse;   // R_D
+    vec3 specular;  // R_E
+    real shininess; // alpha
+    vec3 emission;  // L_E
+};
+
+SHARED_FN Material mixMaterial(Material a, Material b, real w) {
+    if (w <= real(0)) {
+        return a;
+    }
+    if (w >= real(1)) {
+        return b;
+    }
+    return Material(lerp3s(a.ambient, b.ambient, w), lerp3s(a.diffuse, b.diffuse, w),
+                    lerp3s(a.specular, b.specular, w), lerpr(a.shininess, b.shininess, w),
+                    lerp3s(a.emission, b.emission, w));
+}
+
+struct Sample {
+    real d;
+    Material material;
+};
+
+SHARED_FN Sample blendSamples(Sample a, Sample b, Blend blend) {
+    return Sample(blend.d, mixMaterial(a.material, b.material, blend.w));
+}
+
+// Ground patterns: 0 plain, 1 checker, 2 grid. The pattern replaces the diffuse
+// and ambient colour with `secondColor` on alternate cells or on grid lines.
+const int GROUND_PLAIN = 0;
+const int GROUND_CHECKER = 1;
+const int GROUND_GRID = 2;
+
+SHARED_FN Material groundMaterial(Material base, vec3 worldPoint, int pattern, real cellSize,
+                        real lineWidth, vec3 secondColor) {
+    if (pattern == GROUND_PLAIN || !(cellSize > real(0))) {
+        return base;
+    }
+    real u = worldPoint.x / cellSize;
+    real v = worldPoint.z / cellSize;
+    bool useSecond = false;
+    if (pattern == GROUND_CHECKER) {
+        useSecond = modr(floor(u) + floor(v), real(2)) > real(0.5);
+    } else {
+        real halfLine = real(0.5) * lineWidth / cellSize;
+        real du = abs(u - roundHalfUp(u));
+        real dv = abs(v - roundHalfUp(v));
+        useSecond = du < halfLine || dv < halfLine;
+    }
+    if (useSecond) {
+        return Material(secondColor, secondColor, base.specular, base.shininess, base.emission);
+    }
+    return base;
+}

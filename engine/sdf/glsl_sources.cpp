@@ -1,0 +1,10 @@
+#include "sdf/glsl_sources.h"
+
+namespace sdfwb::sdf {
+
+std::string_view glslPrelude() {
+    return "#define real float\n"
+           "#define SHARED_FN\n";
+}
+
+}  // namespace sdfwb::sdf

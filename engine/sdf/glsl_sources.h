@@ -1,0 +1,15 @@
+#pragma once
+// The shared SDF library as GLSL text, embedded at build time from sdf/glsl/*.glsl.
+
+#include <string_view>
+
+namespace sdfwb::sdf {
+
+// GLSL 3.30 prelude that makes the shared subset compile: `real`, SHARED_FN.
+std::string_view glslPrelude();
+
+// The shared sources in dependency order (math, primitives, operators, material,
+// camera, tracer), concatenated.
+std::string_view glslLibrary();
+
+}  // namespace sdfwb::sdf

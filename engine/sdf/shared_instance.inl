@@ -1,0 +1,29 @@
+// Included by shared.h once per precision, with SDFWB_SHARED_NS and
+// SDFWB_SHARED_REAL defined. No include guard on purpose.
+namespace SDFWB_SHARED_NS {
+
+using real = SDFWB_SHARED_REAL;
+using vec2 = glm::vec<2, real>;
+using vec3 = glm::vec<3, real>;
+using vec4 = glm::vec<4, real>;
+
+using glm::abs;
+using glm::clamp;
+using glm::cos;
+using glm::exp2;
+using glm::floor;
+using glm::inversesqrt;
+using glm::log2;
+using glm::max;
+using glm::min;
+using glm::sin;
+using std::sqrt;
+
+#include "sdf/glsl/math.glsl"
+#include "sdf/glsl/primitives.glsl"
+#include "sdf/glsl/operators.glsl"
+#include "sdf/glsl/material.glsl"
+#include "sdf/glsl/camera.glsl"
+#include "sdf/glsl/tracer.glsl"
+
+}  // namespace SDFWB_SHARED_NS
