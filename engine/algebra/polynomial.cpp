@@ -1,0 +1,307 @@
+#include "algebra/polynomial.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sdfwb::algebra {
+
+namespace {
+
+// Merges two canonical term lists (sign = +1 adds b, -1 subtracts it).
+std::vector<Term> merge_terms(const Ring& ring, std::vector<Term>&& a, const std::vector<Term>& b,
+                              int sign) {
+  std::vector<Term> out;
+  out.reserve(a.size() + b.size());
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    int c = ring.compare(a[i].monomial, b[j].monomial);
+    if (c > 0) {
+      out.push_back(std::move(a[i++]));
+    } else if (c < 0) {
+      out.push_back(b[j]);
+      if (sign < 0) out.back().coefficient = -out.back().coefficient;
+      ++j;
+    } else {
+      Term t = std::move(a[i++]);
+      if (sign > 0) {
+        t.coefficient += b[j].coefficient;
+      } else {
+        t.coefficient -= b[j].coefficient;
+      }
+      ++j;
+      if (sgn(t.coefficient) != 0) out.push_back(std::move(t));
+    }
+  }
+  for (; i < a.size(); ++i) out.push_back(std::move(a[i]));
+  for (; j < b.size(); ++j) {
+    out.push_back(b[j]);
+    if (sign < 0) out.back().coefficient = -out.back().coefficient;
+  }
+  return out;
+}
+
+}  // namespace
+
+Polynomial::Polynomial(RingPtr ring) : ring_(std::move(ring)) {
+  if (!ring_) throw std::invalid_argument("polynomial: null ring");
+}
+
+Polynomial::Polynomial(RingPtr ring, std::vector<Term> terms) : Polynomial(std::move(ring)) {
+  for (const Term& t : terms) {
+    if (t.monomial.size() != ring_->size()) {
+      throw std::invalid_argument("polynomial: monomial with " + std::to_string(t.monomial.size()) +
+                                  " exponents in a ring of " + std::to_string(ring_->size()) +
+                                  " variables");
+    }
+  }
+  const Ring& r = *ring_;
+  std::sort(terms.begin(), terms.end(),
+            [&r](const Term& a, const Term& b) { return r.compare(a.monomial, b.monomial) > 0; });
+  for (Term& t : terms) {
+    if (!terms_.empty() && terms_.back().monomial == t.monomial) {
+      terms_.back().coefficient += t.coefficient;
+      if (sgn(terms_.back().coefficient) == 0) terms_.pop_back();
+    } else if (sgn(t.coefficient) != 0) {
+      terms_.push_back(std::move(t));
+    }
+  }
+}
+
+bool Polynomial::is_constant() const {
+  return terms_.empty() || (terms_.size() == 1 && terms_.front().monomial.is_one());
+}
+
+const Term& Polynomial::leading_term() const {
+  if (terms_.empty()) throw std::logic_error("leading term of the zero polynomial");
+  return terms_.front();
+}
+
+std::uint64_t Polynomial::total_degree() const {
+  std::uint64_t d = 0;
+  for (const Term& t : terms_) d = std::max(d, t.monomial.degree());
+  return d;
+}
+
+Exponent Polynomial::degree_in(std::size_t variable) const {
+  Exponent d = 0;
+  for (const Term& t : terms_) d = std::max(d, t.monomial[variable]);
+  return d;
+}
+
+bool Polynomial::contains_variable(std::size_t variable) const { return degree_in(variable) > 0; }
+
+Polynomial Polynomial::monic() const {
+  if (is_zero()) return *this;
+  Polynomial p = *this;
+  Rational lc = leading_coefficient();
+  for (Term& t : p.terms_) t.coefficient /= lc;
+  return p;
+}
+
+Polynomial Polynomial::primitive() const {
+  if (is_zero()) return *this;
+  // Multiply by the lcm of the denominators, then divide by the gcd of the
+  // numerators.
+  Integer den = 1, num = 0;
+  for (const Term& t : terms_) {
+    mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), t.coefficient.get_den_mpz_t());
+    mpz_gcd(num.get_mpz_t(), num.get_mpz_t(), t.coefficient.get_num_mpz_t());
+  }
+  Rational scale(den, num);
+  scale.canonicalize();
+  if (sgn(leading_coefficient()) < 0) scale = -scale;
+  Polynomial p = *this;
+  for (Term& t : p.terms_) t.coefficient *= scale;
+  return p;
+}
+
+Polynomial Polynomial::in_ring(const RingPtr& target) const {
+  if (*target == *ring_) return Polynomial(target, terms_);
+  std::vector<std::size_t> map(ring_->size());
+  for (std::size_t i = 0; i < ring_->size(); ++i) {
+    std::optional<std::size_t> j = target->index_of(ring_->variable(i));
+    if (!j) {
+      if (contains_variable(i)) {
+        throw std::invalid_argument("variable '" + ring_->variable(i) +
+                                    "' does not exist in the target ring");
+      }
+      map[i] = target->size();  // unused: exponent is zero in every term
+    } else {
+      map[i] = *j;
+    }
+  }
+  std::vector<Term> terms;
+  terms.reserve(terms_.size());
+  for (const Term& t : terms_) {
+    Monomial m(target->size());
+    for (std::size_t i = 0; i < ring_->size(); ++i) {
+      if (t.monomial[i] != 0) m[map[i]] = t.monomial[i];
+    }
+    terms.push_back(Term{std::move(m), t.coefficient});
+  }
+  return Polynomial(target, std::move(terms));
+}
+
+void Polynomial::check_same_ring(const Polynomial& other, const char* operation) const {
+  if (!(*ring_ == *other.ring_)) {
+    throw std::invalid_argument(std::string(operation) + " of polynomials from different rings");
+  }
+}
+
+Polynomial Polynomial::operator-() const {
+  Polynomial p = *this;
+  for (Term& t : p.terms_) t.coefficient = -t.coefficient;
+  return p;
+}
+
+Polynomial& Polynomial::operator+=(const Polynomial& other) {
+  check_same_ring(other, "sum");
+  terms_ = merge_terms(*ring_, std::move(terms_), other.terms_, +1);
+  return *this;
+}
+
+Polynomial& Polynomial::operator-=(const Polynomial& other) {
+  check_same_ring(other, "difference");
+  terms_ = merge_terms(*ring_, std::move(terms_), other.terms_, -1);
+  return *this;
+}
+
+Polynomial& Polynomial::operator*=(const Polynomial& other) {
+  check_same_ring(other, "product");
+  // One sorted partial product per term of the shorter factor (monomial
+  // orders respect multiplication), merged pairwise like a balanced tree.
+  const Polynomial& small = terms_.size() <= other.terms_.size() ? *this : other;
+  const Polynomial& large = terms_.size() <= other.terms_.size() ? other : *this;
+  std::vector<std::vector<Term>> parts;
+  parts.reserve(small.terms_.size());
+  for (const Term& s : small.terms_) {
+    std::vector<Term> part;
+    part.reserve(large.terms_.size());
+    for (const Term& l : large.terms_) {
+      part.push_back(Term{s.monomial * l.monomial, s.coefficient * l.coefficient});
+    }
+    parts.push_back(std::move(part));
+  }
+  while (parts.size() > 1) {
+    std::vector<std::vector<Term>> next;
+    for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
+      next.push_back(merge_terms(*ring_, std::move(parts[i]), parts[i + 1], +1));
+    }
+    if (parts.size() % 2) next.push_back(std::move(parts.back()));
+    parts = std::move(next);
+  }
+  terms_ = parts.empty() ? std::vector<Term>{} : std::move(parts.front());
+  return *this;
+}
+
+Polynomial& Polynomial::operator*=(const Rational& factor) {
+  if (sgn(factor) == 0) {
+    terms_.clear();
+  } else {
+    for (Term& t : terms_) t.coefficient *= factor;
+  }
+  return *this;
+}
+
+Polynomial& Polynomial::operator/=(const Rational& divisor) {
+  if (sgn(divisor) == 0) throw std::domain_error("polynomial divided by zero");
+  for (Term& t : terms_) t.coefficient /= divisor;
+  return *this;
+}
+
+bool operator==(const Polynomial& a, const Polynomial& b) {
+  return *a.ring_ == *b.ring_ && a.terms_ == b.terms_;
+}
+
+Polynomial operator+(Polynomial a, const Polynomial& b) { return a += b; }
+Polynomial operator-(Polynomial a, const Polynomial& b) { return a -= b; }
+Polynomial operator*(const Polynomial& a, const Polynomial& b) {
+  Polynomial p = a;
+  return p *= b;
+}
+Polynomial operator+(Polynomial a, const Rational& b) { return a += a.ring()->constant(b); }
+Polynomial operator+(const Rational& a, Polynomial b) { return b += b.ring()->constant(a); }
+Polynomial operator-(Polynomial a, const Rational& b) { return a -= a.ring()->constant(b); }
+Polynomial operator-(const Rational& a, const Polynomial& b) { return b.ring()->constant(a) - b; }
+Polynomial operator*(Polynomial a, const Rational& b) { return a *= b; }
+Polynomial operator*(const Rational& a, Polynomial b) { return b *= a; }
+Polynomial operator/(Polynomial a, const Rational& b) { return a /= b; }
+
+Polynomial multiply_by_term(const Polynomial& a, const Rational& coefficient,
+                            const Monomial& monomial) {
+  if (sgn(coefficient) == 0) return a.ring()->zero();
+  std::vector<Term> terms;
+  terms.reserve(a.term_count());
+  for (const Term& t : a.terms()) terms.push_back(Term{t.monomial * monomial, t.coefficient * coefficient});
+  return Polynomial(a.ring(), std::move(terms));
+}
+
+Polynomial pow(const Polynomial& base, unsigned exponent) {
+  Polynomial result = base.ring()->one();
+  Polynomial square = base;
+  while (exponent > 0) {
+    if (exponent & 1u) result *= square;
+    exponent >>= 1;
+    if (exponent > 0) square *= square;
+  }
+  return result;
+}
+
+Polynomial substitute(const Polynomial& p, const std::vector<Polynomial>& values) {
+  if (values.size() != p.ring()->size()) {
+    throw std::invalid_argument("substitute: " + std::to_string(values.size()) + " values for " +
+                                std::to_string(p.ring()->size()) + " variables");
+  }
+  if (values.empty()) throw std::invalid_argument("substitute: no target ring");
+  const RingPtr& target = values.front().ring();
+  for (const Polynomial& v : values) {
+    if (!(*v.ring() == *target)) throw std::invalid_argument("substitute: values from different rings");
+  }
+  // powers[i][k] = values[i]^k, built on demand.
+  std::vector<std::vector<Polynomial>> powers(values.size());
+  auto power = [&](std::size_t i, Exponent k) -> const Polynomial& {
+    auto& list = powers[i];
+    if (list.empty()) list.push_back(target->one());
+    while (list.size() <= k) list.push_back(list.back() * values[i]);
+    return list[k];
+  };
+  Polynomial sum = target->zero();
+  for (const Term& t : p.terms()) {
+    Polynomial product = target->constant(t.coefficient);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (t.monomial[i] != 0) product *= power(i, t.monomial[i]);
+    }
+    sum += product;
+  }
+  return sum;
+}
+
+Rational evaluate(const Polynomial& p, const std::vector<Rational>& point) {
+  if (point.size() != p.ring()->size()) {
+    throw std::invalid_argument("evaluate: " + std::to_string(point.size()) + " values for " +
+                                std::to_string(p.ring()->size()) + " variables");
+  }
+  Rational sum = 0;
+  for (const Term& t : p.terms()) {
+    Rational product = t.coefficient;
+    for (std::size_t i = 0; i < point.size(); ++i) {
+      for (Exponent k = 0; k < t.monomial[i]; ++k) product *= point[i];
+    }
+    sum += product;
+  }
+  return sum;
+}
+
+Polynomial derivative(const Polynomial& p, std::size_t variable) {
+  std::vector<Term> terms;
+  for (const Term& t : p.terms()) {
+    if (t.monomial[variable] == 0) continue;
+    Term d = t;
+    d.coefficient *= Rational(static_cast<unsigned long>(t.monomial[variable]));
+    d.monomial[variable] -= 1;
+    terms.push_back(std::move(d));
+  }
+  return Polynomial(p.ring(), std::move(terms));
+}
+
+}  // namespace sdfwb::algebra

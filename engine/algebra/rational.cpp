@@ -1,0 +1,10 @@
+#include "algebra/rational.h"
+
+namespace sdfwb::algebra {
+
+std::string to_string(const Rational& value) {
+  // mpq_class keeps its value canonical, so get_str already omits "/1".
+  return value.get_str();
+}
+
+}  // namespace sdfwb::algebra
