@@ -1,0 +1,34 @@
+#pragma once
+// GLSL generation from a tape: GLSL 3.30 core built-ins only, one statement
+// per instruction in the tape's order, so the shader rounds exactly the
+// operations the CPU evaluator rounds (bit-identical wherever the GPU's
+// built-ins are exact: + - * / sqrt floor min max abs, and llvmpipe's).
+
+#include <string>
+#include <vector>
+
+#include "expr/tape.h"
+
+namespace sdfwb::expr {
+
+struct GlslFunction {
+  std::string name;        // e.g. "sdUser0"
+  std::string parameters;  // the parameter list, e.g. "vec3 p"
+  // A GLSL expression for each tape variable, e.g. {"p.x", "p.y", "p.z"}.
+  std::vector<std::string> variables;
+};
+
+// A float constant as a GLSL literal that parses back to the same float as
+// float(value) in C++ (9 significant digits, always with '.' or an exponent;
+// negative ones parenthesized; infinities through uintBitsToFloat).
+std::string glslFloatLiteral(double value);
+
+// The function's statements without braces: `float tN = ...;` lines, then
+// `return` of a float (one output) or a vec2/vec3/vec4 of the outputs in order.
+std::string emitGlslBody(const Tape& tape, const std::vector<std::string>& variables);
+
+// A whole function definition: "<float|vecN> name(parameters) {\n body }\n".
+// Requires 1 to 4 outputs.
+std::string emitGlslFunction(const Tape& tape, const GlslFunction& function);
+
+}  // namespace sdfwb::expr
