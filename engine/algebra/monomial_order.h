@@ -46,6 +46,8 @@ class MonomialOrder {
 
   Kind kind() const { return kind_; }
   const std::vector<std::int64_t>& weights() const { return weights_; }
+  /// The tie-break order of a weighted order (requires kind() == weighted).
+  const MonomialOrder& tie_break() const { return tie_break_.front(); }
   const std::vector<Block>& blocks() const { return blocks_; }
 
   /// Throws std::invalid_argument naming the mismatch when this order cannot

@@ -1,0 +1,95 @@
+#pragma once
+// Limits for long computations: a time limit, a memory limit, a cancel flag
+// and a progress callback. The Groebner engine checks them at safe points
+// (between reduction steps and pair selections), so a computation that runs
+// out of budget stops promptly with a "gave up after ..." message instead of
+// hanging or exhausting memory.
+//
+// Memory is counted, not capped: GMP's allocator must not throw (GMP manual),
+// so budget_gmp_bytes() counts the bytes live in GMP integers through
+// mp_set_memory_functions, and the engine adds an estimate of its own
+// monomial storage. The count is process-wide: GMP numbers owned by other
+// threads count against every budget running at the same time.
+
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace sdfwb::algebra {
+
+/// A flag another thread sets to stop a computation; share it by pointer.
+class CancelToken {
+ public:
+  void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
+  bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+
+ private:
+  std::atomic<bool> cancelled_{false};
+};
+
+/// A snapshot reported to the progress callback.
+struct Progress {
+  double elapsed_seconds = 0;
+  std::size_t basis_size = 0;   // current (not yet reduced) basis elements
+  std::size_t pairs_left = 0;   // critical pairs still to treat
+  std::size_t memory_bytes = 0; // counted memory (see the file comment)
+  const char* stage = "";       // "buchberger", "fglm", "interreduce", ... (static text)
+};
+
+struct Budget {
+  std::optional<double> time_limit_seconds;
+  std::optional<std::size_t> memory_limit_bytes;
+  std::shared_ptr<const CancelToken> cancel;
+  /// Called from the computing thread, at most every progress_interval_seconds.
+  std::function<void(const Progress&)> on_progress;
+  double progress_interval_seconds = 0.25;
+};
+
+/// How a budgeted computation ended.
+enum class Status { completed, cancelled, time_limit, memory_limit };
+
+/// "completed", "cancelled", "time limit", "memory limit".
+const char* to_string(Status status);
+
+/// Thrown inside the engine at a safe point when the budget is exhausted;
+/// public entry points catch it and report a Status instead.
+struct BudgetExceeded {
+  Status status;
+  std::string message;  // "gave up after 2.0 s: time limit of 2 s reached (basis 31, 118 pairs left)"
+};
+
+/// Bytes currently held by GMP numbers in this process (counted once the
+/// accounting allocator is installed; install_gmp_memory_accounting() is
+/// called by every BudgetMonitor and is idempotent).
+std::int64_t budget_gmp_bytes();
+void install_gmp_memory_accounting();
+
+/// Tracks one computation against a Budget. Cheap to poll: tick() only looks
+/// at the clock every few calls.
+class BudgetMonitor {
+ public:
+  explicit BudgetMonitor(const Budget& budget);
+
+  /// Throws BudgetExceeded when cancelled or over a limit; reports progress
+  /// when due. `own_bytes` is the caller's estimate of its non-GMP memory.
+  void check(const Progress& state, std::size_t own_bytes = 0);
+  /// Like check, but reads the clock only every 64th call; for inner loops.
+  void tick(const Progress& state, std::size_t own_bytes = 0) {
+    if ((++ticks_ & 63u) == 0) check(state, own_bytes);
+  }
+  double elapsed_seconds() const;
+
+ private:
+  const Budget& budget_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point next_report_;
+  std::int64_t gmp_bytes_at_start_;
+  std::uint32_t ticks_ = 0;
+};
+
+}  // namespace sdfwb::algebra

@@ -1,0 +1,181 @@
+#pragma once
+// Internal to the Groebner engine: a geobucket (Yan, "The geobucket data
+// structure for polynomials", 1998) holding the polynomial under reduction.
+//
+// Level i holds at most 4^(i+1) terms; adding a polynomial merges it into the
+// level of its size and carries overflow upwards, so each term is merged
+// O(log n) times instead of once per reduction step. The leading term is the
+// largest head among the levels (heads with equal monomials are summed).
+
+#include "algebra/gb_poly.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace sdfwb::algebra::gb {
+
+template <class Domain>
+class Bucket {
+ public:
+  using Coeff = typename Domain::Coeff;
+
+  Bucket(const Layout& layout, const Domain& domain) : layout_(layout), domain_(domain) {}
+
+  void clear() {
+    for (Level& level : levels_) {
+      level.poly.clear();
+      level.head = 0;
+    }
+  }
+
+  /// Adds a polynomial in canonical order.
+  void add(Poly<Coeff>&& p) {
+    if (p.empty()) return;
+    std::size_t i = 0;
+    while (capacity(i) < p.size()) ++i;
+    if (levels_.size() <= i) levels_.resize(i + 1);
+    merge_into(i, std::move(p));
+    while (live(i) > capacity(i)) {
+      if (levels_.size() <= i + 1) levels_.resize(i + 2);
+      Poly<Coeff> moved = take(i);
+      merge_into(i + 1, std::move(moved));
+      ++i;
+    }
+  }
+
+  /// Adds factor * shift * (terms [from, end) of p).
+  void add_multiple(const Poly<Coeff>& p, std::size_t from, const Coeff& factor, const Word* shift) {
+    const std::size_t stride = layout_.stride();
+    Poly<Coeff> product;
+    product.mons.resize((p.size() - from) * stride);
+    product.coeffs.resize(p.size() - from);
+    for (std::size_t i = from; i < p.size(); ++i) {
+      layout_.multiply(&product.mons[(i - from) * stride], p.mon(i, stride), shift);
+      domain_.mul(product.coeffs[i - from], p.coeffs[i], factor);
+    }
+    add(std::move(product));
+  }
+
+  /// Multiplies every coefficient by s.
+  void scale(const Coeff& s) {
+    for (Level& level : levels_) {
+      for (std::size_t i = level.head; i < level.poly.size(); ++i) {
+        domain_.mul(level.poly.coeffs[i], level.poly.coeffs[i], s);
+      }
+    }
+  }
+
+  /// Removes the leading term into (mon, coeff); false when the bucket is 0.
+  bool pop_lead(Word* mon, Coeff& coeff) {
+    const std::size_t stride = layout_.stride();
+    for (;;) {
+      int best = -1;
+      for (std::size_t i = 0; i < levels_.size(); ++i) {
+        const Level& level = levels_[i];
+        if (level.head >= level.poly.size()) continue;
+        if (best < 0 || layout_.compare(level.poly.mon(level.head, stride),
+                                        levels_[best].poly.mon(levels_[best].head, stride)) > 0) {
+          best = static_cast<int>(i);
+        }
+      }
+      if (best < 0) return false;
+      Level& top = levels_[best];
+      const Word* top_mon = top.poly.mon(top.head, stride);
+      std::copy(top_mon, top_mon + stride, mon);
+      coeff = std::move(top.poly.coeffs[top.head]);
+      ++top.head;
+      for (std::size_t i = 0; i < levels_.size(); ++i) {
+        Level& level = levels_[i];
+        if (static_cast<int>(i) == best || level.head >= level.poly.size()) continue;
+        if (layout_.equal(level.poly.mon(level.head, stride), mon)) {
+          domain_.add(coeff, level.poly.coeffs[level.head]);
+          ++level.head;
+        }
+      }
+      if (!Domain::is_zero(coeff)) return true;
+    }
+  }
+
+  std::size_t term_count() const {
+    std::size_t n = 0;
+    for (const Level& level : levels_) n += level.poly.size() - level.head;
+    return n;
+  }
+  std::size_t bytes() const {
+    std::size_t n = scratch_.bytes();
+    for (const Level& level : levels_) n += level.poly.bytes();
+    return n;
+  }
+
+ private:
+  struct Level {
+    Poly<Coeff> poly;
+    std::size_t head = 0;  // terms before head were already popped
+  };
+
+  static std::size_t capacity(std::size_t level) { return std::size_t{4} << (2 * level); }
+  std::size_t live(std::size_t i) const { return levels_[i].poly.size() - levels_[i].head; }
+
+  Poly<Coeff> take(std::size_t i) {
+    Level& level = levels_[i];
+    Poly<Coeff> p;
+    if (level.head == 0) {
+      p = std::move(level.poly);
+    } else {
+      const std::size_t stride = layout_.stride();
+      p.mons.assign(level.poly.mons.begin() + static_cast<std::ptrdiff_t>(level.head * stride),
+                    level.poly.mons.end());
+      p.coeffs.reserve(level.poly.size() - level.head);
+      for (std::size_t k = level.head; k < level.poly.size(); ++k) {
+        p.coeffs.push_back(std::move(level.poly.coeffs[k]));
+      }
+    }
+    level.poly.clear();
+    level.head = 0;
+    return p;
+  }
+
+  // levels_[i] += p, merging two sorted runs.
+  void merge_into(std::size_t i, Poly<Coeff>&& p) {
+    Level& level = levels_[i];
+    if (live(i) == 0) {
+      level.poly = std::move(p);
+      level.head = 0;
+      return;
+    }
+    const std::size_t stride = layout_.stride();
+    Poly<Coeff>& a = level.poly;
+    Poly<Coeff>& out = scratch_;
+    out.clear();
+    out.mons.reserve((live(i) + p.size()) * stride);
+    out.coeffs.reserve(live(i) + p.size());
+    std::size_t x = level.head, y = 0;
+    while (x < a.size() && y < p.size()) {
+      int c = layout_.compare(a.mon(x, stride), p.mon(y, stride));
+      if (c > 0) {
+        out.push(a.mon(x, stride), stride, std::move(a.coeffs[x]));
+        ++x;
+      } else if (c < 0) {
+        out.push(p.mon(y, stride), stride, std::move(p.coeffs[y]));
+        ++y;
+      } else {
+        domain_.add(a.coeffs[x], p.coeffs[y]);
+        if (!Domain::is_zero(a.coeffs[x])) out.push(a.mon(x, stride), stride, std::move(a.coeffs[x]));
+        ++x;
+        ++y;
+      }
+    }
+    for (; x < a.size(); ++x) out.push(a.mon(x, stride), stride, std::move(a.coeffs[x]));
+    for (; y < p.size(); ++y) out.push(p.mon(y, stride), stride, std::move(p.coeffs[y]));
+    std::swap(a, out);
+    level.head = 0;
+    out.clear();
+  }
+
+  const Layout& layout_;
+  const Domain& domain_;
+  std::vector<Level> levels_;
+  Poly<Coeff> scratch_;  // reused merge buffer
+};
+
+}  // namespace sdfwb::algebra::gb

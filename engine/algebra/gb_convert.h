@@ -1,0 +1,21 @@
+#pragma once
+// Internal: conversion between public Polynomials and the engine's packed
+// integer polynomials.
+
+#include "algebra/gb_poly.h"
+#include "algebra/polynomial.h"
+
+namespace sdfwb::algebra::gb {
+
+using IntPoly = Poly<mpz_class>;
+
+/// p times the lcm of its coefficient denominators (integer coefficients,
+/// same terms and order). `ring` of p must be the layout's ring.
+IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* denominator = nullptr);
+
+/// Back to a public polynomial, optionally divided by its leading
+/// coefficient; `divisor` (if given) divides every coefficient.
+Polynomial to_polynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,
+                         const mpz_class* divisor = nullptr);
+
+}  // namespace sdfwb::algebra::gb

@@ -1,0 +1,289 @@
+#include "algebra/gb_engine.h"
+
+#include <algorithm>
+
+namespace sdfwb::algebra::gb {
+
+template <class D>
+Engine<D>::Engine(const Layout& layout, const D& domain, BudgetMonitor& monitor)
+    : layout_(layout), domain_(domain), monitor_(monitor), bucket_(layout, domain) {}
+
+template <class D>
+Progress Engine<D>::progress(const char* stage) const {
+  Progress p;
+  p.basis_size = reducers_.size();
+  p.pairs_left = live_pairs_;
+  p.stage = stage;
+  return p;
+}
+
+template <class D>
+std::size_t Engine<D>::own_bytes() const {
+  return basis_bytes_ + bucket_.bytes() + pairs_.capacity() * sizeof(Pair) +
+         lcm_store_.capacity() * sizeof(Word);
+}
+
+template <class D>
+int Engine<D>::find_reducer(const Word* mon, std::uint64_t mask) const {
+  for (std::uint32_t r : reducers_) {
+    if ((basis_[r].mask & ~mask) != 0) continue;
+    if (layout_.divides(lead(r), mon)) return static_cast<int>(r);
+  }
+  return -1;
+}
+
+template <class D>
+typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* scale_product) {
+  const std::size_t stride = layout_.stride();
+  std::vector<Word> mon(stride), shift(stride);
+  Coeff c{}, scale{}, multiplier{};
+  while (bucket_.pop_lead(mon.data(), c)) {
+    int r = find_reducer(mon.data(), layout_.divmask(mon.data()));
+    if (r < 0) {
+      result.push(mon.data(), stride, std::move(c));
+      continue;
+    }
+    const P& g = basis_[r].poly;
+    domain_.cancel_factors(c, g.coeffs.front(), scale, multiplier);
+    if (!D::is_one(scale)) {
+      bucket_.scale(scale);
+      for (Coeff& x : result.coeffs) domain_.mul(x, x, scale);
+      if (scale_product) domain_.mul(*scale_product, *scale_product, scale);
+    }
+    domain_.negate(multiplier);
+    layout_.divide(shift.data(), mon.data(), g.mons.data());
+    if (g.size() > 1) bucket_.add_multiple(g, 1, multiplier, shift.data());
+    sugar = std::max(sugar, layout_.degree(shift.data()) + g.sugar);
+    ++stats_.reduction_steps;
+    monitor_.tick(progress("reduction"), own_bytes());
+  }
+  result.sugar = sugar;
+  if (!scale_product) domain_.normalize(result.coeffs);
+  return result;
+}
+
+template <class D>
+bool Engine<D>::pair_before(std::uint32_t a, std::uint32_t b) const {
+  const Pair& pa = pairs_[a];
+  const Pair& pb = pairs_[b];
+  if (pa.sugar != pb.sugar) return pa.sugar < pb.sugar;
+  int c = layout_.compare(pair_lcm(pa), pair_lcm(pb));
+  if (c != 0) return c < 0;
+  return a < b;
+}
+
+template <class D>
+void Engine<D>::push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm) {
+  Pair pair{i, j, sugar, lcm_store_.size()};
+  lcm_store_.insert(lcm_store_.end(), lcm, lcm + layout_.stride());
+  pairs_.push_back(pair);
+  heap_.push_back(static_cast<std::uint32_t>(pairs_.size() - 1));
+  std::push_heap(heap_.begin(), heap_.end(), [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); });
+  ++live_pairs_;
+}
+
+template <class D>
+void Engine<D>::insert(P h) {
+  const std::size_t stride = layout_.stride();
+  const auto k = static_cast<std::uint32_t>(basis_.size());
+  basis_bytes_ += h.bytes();
+  Element element{std::move(h), 0};
+  element.mask = layout_.divmask(element.poly.mons.data());
+  basis_.push_back(std::move(element));
+  const Word* lead_k = lead(k);
+  const std::uint32_t sugar_k = basis_[k].poly.sugar;
+  const std::uint32_t degree_k = layout_.degree(lead_k);
+
+  // New pairs (i, k) with the current non-redundant elements, filtered by
+  // Gebauer-Moeller's criteria M, F and the product criterion B_k.
+  const std::size_t m = reducers_.size();
+  std::vector<Word> lcms(m * stride);
+  std::vector<char> coprime(m), keep(m, 1);
+  for (std::size_t a = 0; a < m; ++a) {
+    layout_.lcm(&lcms[a * stride], lead(reducers_[a]), lead_k);
+    coprime[a] = layout_.coprime(lead(reducers_[a]), lead_k);
+  }
+  for (std::size_t a = 0; a < m; ++a) {  // M: an lcm properly divisible by another's
+    for (std::size_t b = 0; b < m; ++b) {
+      if (b == a || !layout_.divides(&lcms[b * stride], &lcms[a * stride])) continue;
+      if (!layout_.equal(&lcms[b * stride], &lcms[a * stride])) {
+        keep[a] = 0;
+        ++stats_.chain_criterion;
+        break;
+      }
+    }
+  }
+  for (std::size_t a = 0; a < m; ++a) {  // F: one pair per lcm; none if one of them is coprime
+    if (!keep[a]) continue;
+    for (std::size_t b = a + 1; b < m; ++b) {
+      if (keep[b] && layout_.equal(&lcms[a * stride], &lcms[b * stride])) {
+        coprime[a] = coprime[a] || coprime[b];
+        keep[b] = 0;
+        ++stats_.chain_criterion;
+      }
+    }
+    if (coprime[a]) {
+      keep[a] = 0;
+      ++stats_.product_criterion;
+    }
+  }
+
+  // Old pairs (i, j) whose lcm is divisible by lt(k) and differs from both
+  // lcm(i, k) and lcm(j, k): the chain i - k - j makes them useless.
+  auto lcm_equals = [&](const Word* x, const Word* y, const Word* l) {
+    for (std::size_t v = layout_.keys(); v < stride; ++v) {
+      if (std::max(x[v], y[v]) != l[v]) return false;
+    }
+    return true;
+  };
+  for (std::uint32_t index : heap_) {
+    Pair& pair = pairs_[index];
+    if (!pair.alive || pair.j == kGenerator) continue;
+    const Word* l = pair_lcm(pair);
+    if (!layout_.divides(lead_k, l)) continue;
+    if (lcm_equals(lead(pair.i), lead_k, l) || lcm_equals(lead(pair.j), lead_k, l)) continue;
+    pair.alive = false;
+    --live_pairs_;
+    ++stats_.chain_criterion;
+  }
+
+  for (std::size_t a = 0; a < m; ++a) {
+    if (!keep[a]) continue;
+    const std::uint32_t i = reducers_[a];
+    const std::uint32_t sugar_i = basis_[i].poly.sugar;
+    const std::uint32_t degree_i = layout_.degree(lead(i));
+    const std::uint32_t degree_l = layout_.degree(&lcms[a * stride]);
+    // Sugar bounds the degree, so sugar >= degree of the leading monomial;
+    // signed arithmetic keeps a violation from wrapping around.
+    const std::int64_t ecart = std::max<std::int64_t>(std::int64_t{sugar_i} - degree_i, std::int64_t{sugar_k} - degree_k);
+    const auto sugar = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ecart) + degree_l);
+    push_pair(i, k, sugar, &lcms[a * stride]);
+  }
+
+  // Elements whose leading monomial lt(k) divides are no longer needed,
+  // neither for new pairs nor as reducers.
+  std::vector<std::uint32_t> kept;
+  for (std::uint32_t r : reducers_) {
+    if (layout_.divides(lead_k, lead(r))) {
+      basis_[r].redundant = true;
+    } else {
+      kept.push_back(r);
+    }
+  }
+  kept.push_back(k);
+  reducers_ = std::move(kept);
+  stats_.max_basis_size = std::max(stats_.max_basis_size, reducers_.size());
+}
+
+template <class D>
+void Engine<D>::interreduce() {
+  const std::size_t stride = layout_.stride();
+  for (std::uint32_t r : reducers_) {
+    const P& g = basis_[r].poly;
+    P result;
+    result.push(g.mons.data(), stride, Coeff(g.coeffs.front()));
+    P tail;
+    tail.mons.assign(g.mons.begin() + static_cast<std::ptrdiff_t>(stride), g.mons.end());
+    tail.coeffs.assign(g.coeffs.begin() + 1, g.coeffs.end());
+    bucket_.clear();
+    bucket_.add(std::move(tail));
+    P reduced = reduce(std::move(result), g.sugar);
+    monitor_.check(progress("interreduction"), own_bytes());
+    basis_[r].poly = std::move(reduced);
+  }
+}
+
+template <class D>
+std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
+  const std::size_t stride = layout_.stride();
+  for (P& f : input) {
+    if (f.empty()) continue;
+    domain_.normalize(f.coeffs);
+    std::uint32_t degree = 0;
+    for (std::size_t t = 0; t < f.size(); ++t) degree = std::max(degree, layout_.degree(f.mon(t, stride)));
+    f.sugar = degree;
+    generators_.push_back(std::move(f));
+    const P& g = generators_.back();
+    push_pair(static_cast<std::uint32_t>(generators_.size() - 1), kGenerator, g.sugar, g.mons.data());
+  }
+  const auto later = [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); };
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    Pair pair = pairs_[heap_.back()];
+    heap_.pop_back();
+    if (!pair.alive) continue;
+    --live_pairs_;
+    monitor_.check(progress("buchberger"), own_bytes());
+    ++stats_.pairs_treated;
+    bucket_.clear();
+    if (pair.j == kGenerator) {
+      P copy = generators_[pair.i];
+      bucket_.add(std::move(copy));
+    } else {
+      const P& f = basis_[pair.i].poly;
+      const P& g = basis_[pair.j].poly;
+      Coeff scale{}, multiplier{};
+      domain_.cancel_factors(f.coeffs.front(), g.coeffs.front(), scale, multiplier);
+      domain_.negate(multiplier);
+      std::vector<Word> shift(stride);
+      const Word* l = pair_lcm(pair);
+      if (f.size() > 1) {
+        layout_.divide(shift.data(), l, f.mons.data());
+        bucket_.add_multiple(f, 1, scale, shift.data());
+      }
+      if (g.size() > 1) {
+        layout_.divide(shift.data(), l, g.mons.data());
+        bucket_.add_multiple(g, 1, multiplier, shift.data());
+      }
+    }
+    P h = reduce(P{}, pair.sugar);
+    if (h.empty()) {
+      ++stats_.zero_reductions;
+      continue;
+    }
+    if (layout_.degree(h.mons.data()) == 0) {
+      // A nonzero constant: the ideal is the whole ring.
+      for (std::uint32_t r : reducers_) basis_[r].redundant = true;
+      reducers_.clear();
+      heap_.clear();
+      live_pairs_ = 0;
+      insert(std::move(h));
+      break;
+    }
+    insert(std::move(h));
+  }
+  interreduce();
+  std::vector<P> result;
+  for (std::uint32_t r : reducers_) result.push_back(std::move(basis_[r].poly));
+  std::sort(result.begin(), result.end(), [&](const P& a, const P& b) {
+    return layout_.compare(a.mons.data(), b.mons.data()) < 0;
+  });
+  return result;
+}
+
+template <class D>
+void Engine<D>::set_basis(std::vector<P> basis) {
+  basis_.clear();
+  reducers_.clear();
+  for (P& g : basis) {
+    if (g.empty()) continue;
+    Element element{std::move(g), 0};
+    element.mask = layout_.divmask(element.poly.mons.data());
+    basis_bytes_ += element.poly.bytes();
+    basis_.push_back(std::move(element));
+    reducers_.push_back(static_cast<std::uint32_t>(basis_.size() - 1));
+  }
+}
+
+template <class D>
+typename Engine<D>::P Engine<D>::normal_form(P f, Coeff* scale) {
+  bucket_.clear();
+  bucket_.add(std::move(f));
+  if (scale) *scale = Coeff(1);
+  return reduce(P{}, 0, scale);
+}
+
+template class Engine<IntegerDomain>;
+template class Engine<ModularDomain>;
+
+}  // namespace sdfwb::algebra::gb

@@ -1,0 +1,91 @@
+#pragma once
+// Internal to the Groebner engine: Buchberger's algorithm on packed
+// polynomials, generic over the coefficient domain.
+//
+// - Critical pairs are chosen by the sugar strategy (Giovini, Mora, Niesi,
+//   Robbiano, Traverso 1991): smallest sugar first, then smallest lcm.
+// - Useless pairs are removed by Gebauer and Moeller's installation of
+//   Buchberger's criteria (product and chain criteria; "Installation of
+//   Buchberger's algorithm", 1988), as in Becker-Weispfenning's UPDATE.
+// - Input generators enter through the same queue as pairs (with their own
+//   degree as sugar), so they are reduced against what is already known.
+// - Reduction is full (lead and tail) in a geobucket; the final basis is
+//   interreduced. Results are normalized by the domain (primitive integer
+//   polynomials with positive leading coefficient, or monic mod p) and sorted
+//   by increasing leading monomial.
+
+#include "algebra/budget.h"
+#include "algebra/gb_bucket.h"
+#include "algebra/groebner_stats.h"
+
+#include <vector>
+
+namespace sdfwb::algebra::gb {
+
+template <class Domain>
+class Engine {
+ public:
+  using Coeff = typename Domain::Coeff;
+  using P = Poly<Coeff>;
+
+  Engine(const Layout& layout, const Domain& domain, BudgetMonitor& monitor);
+
+  /// The reduced Groebner basis of the input (zero polynomials ignored).
+  /// Throws BudgetExceeded at a safe point when the budget runs out.
+  std::vector<P> groebner(std::vector<P> input);
+
+  /// Installs a basis that is already a (reduced or not) Groebner basis, for
+  /// normal_form.
+  void set_basis(std::vector<P> basis);
+  /// Full normal form of f with respect to the installed basis. Normalized
+  /// by the domain, unless `scale` is given: then the result is scale * NF(f)
+  /// exactly, with the accumulated factor stored in *scale.
+  P normal_form(P f, Coeff* scale = nullptr);
+
+  const GroebnerStats& stats() const { return stats_; }
+
+ private:
+  struct Element {
+    P poly;
+    std::uint64_t mask;
+    bool redundant = false;
+  };
+  struct Pair {
+    std::uint32_t i, j;  // j == kGenerator: input generator i
+    std::uint32_t sugar;
+    std::size_t lcm;  // offset into lcm_store_
+    bool alive = true;
+  };
+  static constexpr std::uint32_t kGenerator = 0xffffffffu;
+
+  const Word* lead(std::uint32_t element) const { return basis_[element].poly.mons.data(); }
+  const Word* pair_lcm(const Pair& pair) const { return lcm_store_.data() + pair.lcm; }
+  int find_reducer(const Word* mon, std::uint64_t mask) const;
+  /// Reduces the bucket completely; `result` holds terms already final.
+  P reduce(P result, std::uint32_t sugar, Coeff* scale_product = nullptr);
+  void insert(P h);
+  void push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm);
+  bool pair_before(std::uint32_t a, std::uint32_t b) const;
+  void interreduce();
+  Progress progress(const char* stage) const;
+  std::size_t own_bytes() const;
+
+  const Layout& layout_;
+  const Domain& domain_;
+  BudgetMonitor& monitor_;
+  Bucket<Domain> bucket_;
+  std::vector<Element> basis_;
+  std::vector<std::uint32_t> reducers_;  // indices of non-redundant elements
+  std::vector<P> generators_;
+  std::vector<Pair> pairs_;
+  std::vector<Word> lcm_store_;
+  std::vector<std::uint32_t> heap_;  // pair indices, best on top
+  std::size_t live_pairs_ = 0;
+  std::size_t basis_bytes_ = 0;
+  GroebnerStats stats_;
+};
+
+extern template class Engine<IntegerDomain>;
+extern template class Engine<ModularDomain>;
+
+}  // namespace sdfwb::algebra::gb

@@ -1,0 +1,78 @@
+#pragma once
+// Internal to the Groebner engine: the packed monomial representation.
+//
+// A monomial is `stride` consecutive 32-bit words: first the order keys M*e
+// (M = MonomialOrder::matrix), then the exponents e. Comparing two monomials
+// is a lexicographic comparison of their keys; multiplying adds all words,
+// because keys are linear in the exponents. Divisibility reads the exponents,
+// after a quick reject with a 64-bit divisibility mask.
+
+#include "algebra/ring.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sdfwb::algebra::gb {
+
+using Word = std::int32_t;
+
+class Layout {
+ public:
+  explicit Layout(const Ring& ring);
+
+  std::size_t vars() const { return vars_; }
+  std::size_t keys() const { return keys_; }
+  std::size_t stride() const { return stride_; }
+  const Word* exponents(const Word* m) const { return m + keys_; }
+
+  int compare(const Word* a, const Word* b) const {
+    for (std::size_t i = 0; i < keys_; ++i) {
+      if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    }
+    return 0;
+  }
+  bool equal(const Word* a, const Word* b) const {
+    for (std::size_t i = keys_; i < stride_; ++i) {
+      if (a[i] != b[i]) return false;
+    }
+    return true;
+  }
+  void multiply(Word* out, const Word* a, const Word* b) const {
+    for (std::size_t i = 0; i < stride_; ++i) out[i] = a[i] + b[i];
+  }
+  /// out = b / a; requires divides(a, b).
+  void divide(Word* out, const Word* b, const Word* a) const {
+    for (std::size_t i = 0; i < stride_; ++i) out[i] = b[i] - a[i];
+  }
+  /// True if a divides b.
+  bool divides(const Word* a, const Word* b) const {
+    for (std::size_t i = keys_; i < stride_; ++i) {
+      if (a[i] > b[i]) return false;
+    }
+    return true;
+  }
+  bool coprime(const Word* a, const Word* b) const {
+    for (std::size_t i = keys_; i < stride_; ++i) {
+      if (a[i] != 0 && b[i] != 0) return false;
+    }
+    return true;
+  }
+  void lcm(Word* out, const Word* a, const Word* b) const;
+  /// Fills the keys from the exponents already stored in out[keys()..].
+  void encode_keys(Word* out) const;
+  std::uint32_t degree(const Word* m) const {
+    std::uint32_t d = 0;
+    for (std::size_t i = keys_; i < stride_; ++i) d += static_cast<std::uint32_t>(m[i]);
+    return d;
+  }
+  /// Mask with a bit set for each (variable, threshold) the exponent reaches:
+  /// divides(a, b) implies (mask(a) & ~mask(b)) == 0.
+  std::uint64_t divmask(const Word* m) const;
+
+ private:
+  std::size_t vars_, keys_, stride_;
+  std::vector<std::vector<Word>> matrix_;
+  std::vector<std::vector<std::int32_t>> mask_bits_;  // per variable: thresholds
+};
+
+}  // namespace sdfwb::algebra::gb

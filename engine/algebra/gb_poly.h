@@ -1,0 +1,88 @@
+#pragma once
+// Internal to the Groebner engine: packed polynomials and the coefficient
+// domains the engine is written against.
+//
+// A domain supplies the coefficient type and the three operations the
+// reduction needs, so one Buchberger serves both exact rational work
+// (IntegerDomain: integer coefficients, fraction-free steps, primitive
+// results) and modular work (ModularDomain: Z/p, monic results).
+
+#include "algebra/gb_layout.h"
+
+#include <gmpxx.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace sdfwb::algebra::gb {
+
+/// Terms in decreasing order of their monomials, no zero coefficients.
+template <class Coeff>
+struct Poly {
+  std::vector<Word> mons;  // size() * stride words
+  std::vector<Coeff> coeffs;
+  std::uint32_t sugar = 0;
+
+  std::size_t size() const { return coeffs.size(); }
+  bool empty() const { return coeffs.empty(); }
+  const Word* mon(std::size_t i, std::size_t stride) const { return mons.data() + i * stride; }
+  void push(const Word* m, std::size_t stride, Coeff&& c) {
+    mons.insert(mons.end(), m, m + stride);
+    coeffs.push_back(std::move(c));
+  }
+  void clear() {
+    mons.clear();
+    coeffs.clear();
+  }
+  std::size_t bytes() const { return mons.capacity() * sizeof(Word) + coeffs.capacity() * sizeof(Coeff); }
+};
+
+/// Integers standing for rationals up to a nonzero factor (Q's fraction-free
+/// arithmetic): to cancel the leading coefficient c of p with the reducer's
+/// leading coefficient a, p becomes (a/g)*p - (c/g)*m*reducer, g = gcd(a, c).
+struct IntegerDomain {
+  using Coeff = mpz_class;
+
+  static bool is_zero(const Coeff& c) { return mpz_sgn(c.get_mpz_t()) == 0; }
+  static bool is_one(const Coeff& c) { return mpz_cmp_ui(c.get_mpz_t(), 1) == 0; }
+  static void add(Coeff& a, const Coeff& b) { mpz_add(a.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t()); }
+  static void mul(Coeff& out, const Coeff& a, const Coeff& b) {
+    mpz_mul(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  }
+  static void negate(Coeff& a) { mpz_neg(a.get_mpz_t(), a.get_mpz_t()); }
+  /// scale = a/g, multiplier = c/g with g = gcd(a, c), sign moved into scale
+  /// so that scale > 0: then p*scale - multiplier*(reducer) cancels c.
+  static void cancel_factors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
+    mpz_gcd(multiplier.get_mpz_t(), a.get_mpz_t(), c.get_mpz_t());
+    mpz_divexact(scale.get_mpz_t(), a.get_mpz_t(), multiplier.get_mpz_t());
+    mpz_divexact(multiplier.get_mpz_t(), c.get_mpz_t(), multiplier.get_mpz_t());
+    if (mpz_sgn(scale.get_mpz_t()) < 0) {
+      negate(scale);
+      negate(multiplier);
+    }
+  }
+  /// Divides by the content and makes the leading coefficient positive.
+  static void normalize(std::vector<Coeff>& coeffs);
+};
+
+/// Z/p for a prime p < 2^31; results are made monic.
+struct ModularDomain {
+  using Coeff = std::uint32_t;
+  std::uint32_t p;
+
+  static bool is_zero(Coeff c) { return c == 0; }
+  static bool is_one(Coeff c) { return c == 1; }
+  void add(Coeff& a, Coeff b) const { a = (a + b) % p; }
+  void mul(Coeff& out, Coeff a, Coeff b) const {
+    out = static_cast<Coeff>(static_cast<std::uint64_t>(a) * b % p);
+  }
+  void negate(Coeff& a) const { a = a == 0 ? 0 : p - a; }
+  Coeff inverse(Coeff a) const;
+  void cancel_factors(Coeff c, Coeff a, Coeff& scale, Coeff& multiplier) const {
+    scale = 1;
+    mul(multiplier, c, inverse(a));
+  }
+  void normalize(std::vector<Coeff>& coeffs) const;
+};
+
+}  // namespace sdfwb::algebra::gb

@@ -1,0 +1,86 @@
+#include "algebra/groebner.h"
+
+#include "algebra/gb_convert.h"
+#include "algebra/gb_engine.h"
+
+#include <stdexcept>
+
+namespace sdfwb::algebra {
+
+namespace {
+
+using IntegerEngine = gb::Engine<gb::IntegerDomain>;
+
+void check_ring(const std::vector<Polynomial>& polys, const RingPtr& ring, const char* what) {
+  for (const Polynomial& p : polys) {
+    if (!(*p.ring() == *ring)) throw std::invalid_argument(std::string(what) + ": polynomials from different rings");
+  }
+}
+
+}  // namespace
+
+GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options) {
+  GroebnerResult result;
+  BudgetMonitor monitor(options.budget);
+  const gb::Layout layout(*ideal.ring());
+  const gb::IntegerDomain domain;
+  IntegerEngine engine(layout, domain, monitor);
+  try {
+    std::vector<gb::IntPoly> input;
+    for (const Polynomial& g : ideal.generators()) input.push_back(gb::to_integer_poly(g, layout));
+    std::vector<gb::IntPoly> basis = engine.groebner(std::move(input));
+    for (const gb::IntPoly& g : basis) result.basis.push_back(gb::to_polynomial(g, layout, ideal.ring(), true));
+  } catch (const BudgetExceeded& e) {
+    result.status = e.status;
+    result.message = e.message;
+    result.basis.clear();
+  }
+  result.stats = engine.stats();
+  result.seconds = monitor.elapsed_seconds();
+  return result;
+}
+
+Polynomial normal_form(const Polynomial& f, const std::vector<Polynomial>& basis) {
+  check_ring(basis, f.ring(), "normal_form");
+  const gb::Layout layout(*f.ring());
+  const gb::IntegerDomain domain;
+  const Budget unlimited;
+  BudgetMonitor monitor(unlimited);
+  IntegerEngine engine(layout, domain, monitor);
+  std::vector<gb::IntPoly> packed;
+  for (const Polynomial& g : basis) packed.push_back(gb::to_integer_poly(g, layout));
+  engine.set_basis(std::move(packed));
+  mpz_class denominator, scale;
+  gb::IntPoly r = engine.normal_form(gb::to_integer_poly(f, layout, &denominator), &scale);
+  mpz_class divisor = denominator * scale;
+  return gb::to_polynomial(r, layout, f.ring(), false, &divisor);
+}
+
+bool is_reduced_groebner_basis(const std::vector<Polynomial>& basis) {
+  if (basis.empty()) return true;
+  const RingPtr& ring = basis.front().ring();
+  check_ring(basis, ring, "is_reduced_groebner_basis");
+  for (std::size_t i = 0; i < basis.size(); ++i) {
+    const Polynomial& g = basis[i];
+    if (g.is_zero() || g.leading_coefficient() != 1) return false;
+    if (i > 0 && ring->compare(basis[i - 1].leading_monomial(), g.leading_monomial()) >= 0) return false;
+    for (const Polynomial& h : basis) {
+      for (const Term& t : g.terms()) {
+        if (&h != &g || &t != &g.terms().front()) {
+          if (h.leading_monomial().divides(t.monomial)) return false;
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < basis.size(); ++i) {
+    for (std::size_t j = i + 1; j < basis.size(); ++j) {
+      const Monomial l = lcm(basis[i].leading_monomial(), basis[j].leading_monomial());
+      Polynomial s = multiply_by_term(basis[i], Rational(1), l / basis[i].leading_monomial()) -
+                     multiply_by_term(basis[j], Rational(1), l / basis[j].leading_monomial());
+      if (!normal_form(s, basis).is_zero()) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace sdfwb::algebra

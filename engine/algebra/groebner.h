@@ -1,0 +1,50 @@
+#pragma once
+// Reduced Groebner bases over Q.
+//
+//   auto ring = Ring::make({"x", "y"}, MonomialOrder::lex());
+//   GroebnerResult r = groebner_basis(Ideal(ring, {f1, f2}), {});
+//   if (r.ok()) for (const Polynomial& g : r.basis) std::cout << g << "\n";
+//   else std::cerr << r.message << "\n";  // "gave up after 10.0 s: ..."
+//
+// The reduced basis is unique: each element monic, no term of an element
+// divisible by another element's leading monomial, elements sorted by
+// increasing leading monomial. The zero ideal has the empty basis, the unit
+// ideal the basis {1}.
+
+#include "algebra/budget.h"
+#include "algebra/groebner_stats.h"
+#include "algebra/ideal.h"
+
+#include <string>
+#include <vector>
+
+namespace sdfwb::algebra {
+
+struct GroebnerOptions {
+  Budget budget;
+};
+
+struct GroebnerResult {
+  Status status = Status::completed;
+  std::string message;             // empty when completed, else "gave up after ..."
+  std::vector<Polynomial> basis;   // empty unless completed
+  GroebnerStats stats;
+  double seconds = 0;              // the computation's own wall-clock time
+
+  bool ok() const { return status == Status::completed; }
+};
+
+/// Buchberger's algorithm (sugar selection, Gebauer-Moeller criteria) with
+/// exact fraction-free arithmetic, in the ideal's ring and order.
+GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options = {});
+
+/// Normal form (remainder) of f by a Groebner basis of its ring, fully
+/// reduced; it is the unique representative of f modulo the ideal. The result
+/// is exact (not scaled).
+Polynomial normal_form(const Polynomial& f, const std::vector<Polynomial>& groebner_basis);
+
+/// True if `basis` is a reduced Groebner basis in the sense above (every
+/// S-polynomial reduces to zero, monic, no reducible term, sorted).
+bool is_reduced_groebner_basis(const std::vector<Polynomial>& basis);
+
+}  // namespace sdfwb::algebra

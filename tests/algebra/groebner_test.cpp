@@ -1,0 +1,51 @@
+#include "algebra/groebner.h"
+
+#include <gtest/gtest.h>
+
+namespace sdfwb::algebra {
+namespace {
+
+std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
+  std::vector<std::string> out;
+  for (const Polynomial& p : polys) out.push_back(p.to_string());
+  return out;
+}
+
+TEST(Groebner, CoxLittleOSheaGrlex) {
+  // CLO 2.7 Example 1: <x^3 - 2xy, x^2 y - 2y^2 + x> in grlex with x > y.
+  auto r = Ring::make({"x", "y"}, MonomialOrder::deglex());
+  Polynomial x = r->var("x"), y = r->var("y");
+  GroebnerResult g = groebner_basis(Ideal(r, {pow(x, 3) - 2 * x * y, pow(x, 2) * y - 2 * pow(y, 2) + x}));
+  ASSERT_TRUE(g.ok()) << g.message;
+  EXPECT_EQ(strings(g.basis), (std::vector<std::string>{"y^2 - 1/2*x", "x*y", "x^2"}));
+  EXPECT_TRUE(is_reduced_groebner_basis(g.basis));
+}
+
+TEST(Groebner, TwistedCubicLex) {
+  auto r = Ring::make({"t", "x", "y", "z"}, MonomialOrder::lex());
+  Polynomial t = r->var("t"), x = r->var("x"), y = r->var("y"), z = r->var("z");
+  GroebnerResult g = groebner_basis(Ideal(r, {x - t, y - pow(t, 2), z - pow(t, 3)}));
+  ASSERT_TRUE(g.ok()) << g.message;
+  EXPECT_EQ(strings(g.basis),
+            (std::vector<std::string>{"y^3 - z^2", "x*z - y^2", "x*y - z", "x^2 - y", "t - x"}));
+}
+
+TEST(Groebner, UnitIdealAndZero) {
+  auto r = Ring::make({"x", "y"});
+  Polynomial x = r->var("x"), y = r->var("y");
+  GroebnerResult g = groebner_basis(Ideal(r, {x * y - 1, x}));
+  ASSERT_TRUE(g.ok());
+  EXPECT_EQ(strings(g.basis), (std::vector<std::string>{"1"}));
+  EXPECT_TRUE(groebner_basis(Ideal(r, {r->zero()})).basis.empty());
+}
+
+TEST(Groebner, NormalFormIsExact) {
+  auto r = Ring::make({"x", "y"}, MonomialOrder::lex());
+  Polynomial x = r->var("x"), y = r->var("y");
+  GroebnerResult g = groebner_basis(Ideal(r, {3 * x - 2 * y}));
+  ASSERT_TRUE(g.ok());
+  EXPECT_EQ(normal_form(x * x + 1, g.basis).to_string(), "4/9*y^2 + 1");
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra

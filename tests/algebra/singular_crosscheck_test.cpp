@@ -1,0 +1,40 @@
+// Cross-checks our reduced Groebner bases against Singular's. Skips when
+// Singular is missing, unless SDFWB_REQUIRE_SINGULAR=1 (set in CI).
+
+#include "algebra/groebner.h"
+#include "example_systems.h"
+#include "singular_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace sdfwb::algebra {
+namespace {
+
+bool singular_required() {
+  const char* value = std::getenv("SDFWB_REQUIRE_SINGULAR");
+  return value && std::string(value) == "1";
+}
+
+TEST(SingularCrossCheck, ReducedBasesAgree) {
+  if (!testing::singular_path()) {
+    if (singular_required()) FAIL() << "Singular is required (SDFWB_REQUIRE_SINGULAR=1) but not installed";
+    GTEST_SKIP() << "Singular is not installed";
+  }
+  for (const testing::NamedSystem& system : testing::small_systems()) {
+    SCOPED_TRACE(system.name);
+    GroebnerResult ours = groebner_basis(system.ideal);
+    ASSERT_TRUE(ours.ok()) << ours.message;
+    testing::SingularResult theirs = testing::singular_std(system.ideal, 30);
+    ASSERT_TRUE(theirs.ok) << theirs.error;
+    ASSERT_EQ(ours.basis.size(), theirs.basis.size());
+    for (std::size_t i = 0; i < ours.basis.size(); ++i) {
+      EXPECT_EQ(ours.basis[i], theirs.basis[i]) << ours.basis[i] << "  vs  " << theirs.basis[i];
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra

@@ -1,0 +1,42 @@
+#pragma once
+// Test and benchmark support: runs Singular (a reference computer algebra
+// system) on an ideal and reads back its reduced Groebner basis, so our
+// results can be cross-checked and timed against it in the same run.
+
+#include "algebra/ideal.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfwb::algebra::testing {
+
+/// Path of the Singular executable, or nullopt when it is not installed.
+std::optional<std::string> singular_path();
+
+struct SingularResult {
+  bool ok = false;
+  std::string error;               // why it failed (timeout, parse error, ...)
+  std::vector<Polynomial> basis;   // monic, sorted by increasing leading monomial
+  double seconds = 0;              // Singular's own wall-clock time for the command
+};
+
+/// Reduced Groebner basis by Singular's std (option redSB) in the ideal's
+/// ring and order.
+SingularResult singular_std(const Ideal& ideal, double timeout_seconds = 60);
+
+/// Generators of the elimination ideal I ∩ Q[remaining variables] by
+/// Singular's eliminate, followed by a reduced std in `target` (a ring with
+/// the remaining variables).
+SingularResult singular_eliminate(const Ideal& ideal, const std::vector<std::string>& eliminated,
+                                  const RingPtr& target, double timeout_seconds = 60);
+
+/// Singular's order name for a ring, e.g. "dp", "lp", "(a(1,2),dp)",
+/// "(dp(2),dp(3))"; nullopt for orders without a translation.
+std::optional<std::string> singular_order(const Ring& ring);
+
+/// Parses Singular's printed polynomial ("v0^2*v1-1/2*v2+3", variables named
+/// prefix + the ring's variable index).
+Polynomial parse_singular_polynomial(const std::string& text, const RingPtr& ring, const char* prefix = "v");
+
+}  // namespace sdfwb::algebra::testing
