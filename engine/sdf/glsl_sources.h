@@ -9,7 +9,7 @@ namespace sdfwb::sdf {
 std::string_view glslPrelude();
 
 // The shared sources in dependency order (math, primitives, operators, material,
-// camera, tracer), concatenated.
+// camera, instructions, tracer), concatenated.
 std::string_view glslLibrary();
 
 }  // namespace sdfwb::sdf

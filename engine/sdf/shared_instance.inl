@@ -24,6 +24,7 @@ using std::sqrt;
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"
 #include "sdf/glsl/camera.glsl"
+#include "sdf/glsl/instructions.glsl"
 #include "sdf/glsl/tracer.glsl"
 
 }  // namespace SDFWB_SHARED_NS

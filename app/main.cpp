@@ -1,0 +1,32 @@
+// sdf-workbench: one executable, one subcommand per job.
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "app/render_command.h"
+
+namespace {
+
+// With no subcommand and no display, the main job is a snapshot of the default scene.
+int runDefaultJob() {
+    sdfwb::app::RenderArguments snapshot;
+    snapshot.output = (std::filesystem::current_path() / "sdf-workbench-default.png").string();
+    return sdfwb::app::runRender(snapshot);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"SDF Workbench: model and render surfaces defined by signed distance functions"};
+    app.require_subcommand(0, 1);
+    sdfwb::app::RenderArguments renderArguments;
+    CLI::App* render = sdfwb::app::addRenderCommand(app, renderArguments);
+    CLI11_PARSE(app, argc, argv);
+    if (render->parsed()) {
+        return sdfwb::app::runRender(renderArguments);
+    }
+    return runDefaultJob();
+}

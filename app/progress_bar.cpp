@@ -1,0 +1,35 @@
+#include "app/progress_bar.h"
+
+#include <cstdio>
+
+#include <unistd.h>
+
+namespace sdfwb::app {
+
+ProgressBar::ProgressBar(std::string label) : label_(std::move(label)), enabled_(::isatty(STDERR_FILENO) != 0) {}
+
+ProgressBar::~ProgressBar() {
+    if (enabled_ && lastPercent_ >= 0) {
+        std::fprintf(stderr, "\r\033[K");
+        std::fflush(stderr);
+    }
+}
+
+void ProgressBar::update(int done, int total) {
+    if (!enabled_ || total <= 0) {
+        return;
+    }
+    int percent = done * 100 / total;
+    if (percent == lastPercent_) {
+        return;
+    }
+    lastPercent_ = percent;
+    constexpr int kWidth = 40;
+    int filled = percent * kWidth / 100;
+    std::string bar(static_cast<size_t>(filled), '#');
+    bar.append(static_cast<size_t>(kWidth - filled), '.');
+    std::fprintf(stderr, "\r%s [%s] %3d%%", label_.c_str(), bar.c_str(), percent);
+    std::fflush(stderr);
+}
+
+}  // namespace sdfwb::app

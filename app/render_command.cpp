@@ -1,0 +1,117 @@
+#include "app/render_command.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "app/progress_bar.h"
+#include "app/scene_source.h"
+#include "cpu/cpu_renderer.h"
+#include "image/image_io.h"
+#include "program/compile_scene.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb::app {
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int) { interrupted = true; }
+
+// "WxH" -> (W, H); throws std::runtime_error with the offending text.
+std::pair<int, int> parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384) {
+        throw std::runtime_error("--size: expected WIDTHxHEIGHT with each from 1 to 16384 (got \"" + text + "\")");
+    }
+    return {w, h};
+}
+
+}  // namespace
+
+CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
+    CLI::App* render = app.add_subcommand("render", "Render a scene to an image file without a window");
+    render->add_option("scene", a.scene, "Scene file (JSON); omit for the built-in default scene");
+    render->add_option("-o,--output", a.output, "Output image: .png, .jpg, .tif (8-bit sRGB) or .exr (linear float)")
+        ->required();
+    render->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default: the scene's render.width x height)");
+    render->add_option("--aa", a.aa, "Antialiasing: AA x AA samples per pixel, 1-8 (default: the scene's)")
+        ->check(CLI::Range(1, 8));
+    render->add_option("--threads", a.threads, "CPU threads (default: all)")->check(CLI::Range(1, 1024));
+    render->add_option("--backend", a.backend, "Renderer: cpu")->check(CLI::IsMember({"cpu"}));
+    render->add_option("--precision", a.precision, "CPU arithmetic: float (matches GL) or double (reference)")
+        ->check(CLI::IsMember({"float", "double"}));
+    render->add_option("--heat", a.heat, "Also write a step-count heat image to this file");
+    render->add_flag("--stats", a.stats, "Print render time, steps per pixel and hit ratio");
+    return render;
+}
+
+int runRender(const RenderArguments& a) {
+    try {
+        image::checkWritableFormat(a.output);
+        if (!a.heat.empty()) {
+            image::checkWritableFormat(a.heat);
+        }
+        scene::Scene scene = loadSceneArgument(a.scene);
+        program::CompileOptions options;
+        if (!a.size.empty()) {
+            std::tie(options.width, options.height) = parseSize(a.size);
+        }
+        options.aa = a.aa;
+        program::Program program = program::compileScene(scene, options);
+
+        cpu::RenderControl control;
+        control.threads = a.threads;
+        control.precision = a.precision == "double" ? cpu::Precision::Double : cpu::Precision::Float;
+        control.cancel = &interrupted;
+        ProgressBar bar("rendering");
+        control.progress = [&](int done, int total) { bar.update(done, total); };
+        std::signal(SIGINT, onInterrupt);
+        std::signal(SIGTERM, onInterrupt);
+
+        auto start = std::chrono::steady_clock::now();
+        cpu::RenderOutcome outcome = cpu::renderCpu(program, control);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (outcome.cancelled) {
+            std::cerr << "sdf-workbench render: cancelled; no image written\n";
+            return 130;
+        }
+
+        std::ostringstream settings;
+        settings << program.width << "x" << program.height << " aa " << program.aa << ", max steps "
+                 << program.trace.maxSteps << ", precision " << a.precision;
+        image::Metadata metadata = {{"ImageDescription", scene.description},
+                                    {"sdfwb:scene", scene.name},
+                                    {"sdfwb:backend", a.backend},
+                                    {"sdfwb:settings", settings.str()},
+                                    {"sdfwb:renderSeconds", std::to_string(seconds)}};
+        image::writeImage(a.output, outcome.frame.color, metadata);
+        if (!a.heat.empty()) {
+            image::writeImage(a.heat, image::stepHeatImage(outcome.frame, program.trace.maxSteps), metadata);
+        }
+        if (a.stats) {
+            image::FrameStats stats = image::frameStats(outcome.frame);
+            std::printf("backend %s (%s), %dx%d aa %d\n", a.backend.c_str(), a.precision.c_str(), program.width,
+                        program.height, program.aa);
+            std::printf("time %.3f s, mean steps %.2f, max steps %.0f, hit ratio %.4f\n", seconds, stats.meanSteps,
+                        stats.maxSteps, stats.hitRatio);
+        }
+        std::printf("%s\n", a.output.c_str());
+        return 0;
+    } catch (const scene::SceneError& error) {
+        for (const std::string& problem : error.problems()) {
+            std::cerr << "sdf-workbench render: " << problem << "\n";
+        }
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "sdf-workbench render: " << error.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace sdfwb::app

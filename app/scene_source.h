@@ -1,0 +1,19 @@
+#pragma once
+// Where the command-line tools get a scene: a file, or the default scene
+// embedded in the binary (so the program works from any directory).
+
+#include <string>
+#include <string_view>
+
+#include "scene/scene.h"
+
+namespace sdfwb::app {
+
+// The text of scenes/default.json, embedded at build time.
+std::string_view defaultSceneJson();
+
+// "" or "default" gives the embedded default scene; otherwise the file.
+// Throws scene::SceneError.
+scene::Scene loadSceneArgument(const std::string& argument);
+
+}  // namespace sdfwb::app

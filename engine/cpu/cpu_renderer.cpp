@@ -1,0 +1,121 @@
+#include "cpu/cpu_renderer.h"
+
+#include <mutex>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "sdf/shared.h"
+
+namespace sdfwb::cpu {
+
+namespace f32 {
+using namespace sdfwb::sdf::f32;
+#include "cpu/interpreter.inl"
+}  // namespace f32
+
+namespace f64 {
+using namespace sdfwb::sdf::f64;
+#include "cpu/interpreter.inl"
+}  // namespace f64
+
+namespace {
+
+// Kernel is f32::Kernel or f64::Kernel.
+template <typename Kernel>
+RenderOutcome render(const program::Program& program, const RenderControl& control) {
+    const Kernel kernel(program);
+    using Real = typename Kernel::Real;
+    using vec3 = typename Kernel::Vec3;
+    using Sample = typename Kernel::SampleType;
+
+    const int width = program.width, height = program.height, aa = program.aa;
+    RenderOutcome outcome;
+    outcome.frame.color = image::Image(width, height);
+    outcome.frame.steps.assign(outcome.frame.color.pixelCount(), 0.0f);
+    outcome.frame.coverage.assign(outcome.frame.color.pixelCount(), 0.0f);
+
+    const int tile = std::max(1, control.tileSize);
+    const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
+    const int tilesTotal = tilesX * tilesY;
+    std::atomic<int> tilesDone{0};
+    std::atomic<bool> cancelled{false};
+    std::mutex progressMutex;
+
+    auto renderTile = [&](int tileIndex) {
+        if (control.cancel && control.cancel->load()) {
+            cancelled = true;
+            return;
+        }
+        std::vector<vec3> points(static_cast<size_t>(program.pointRegisters));
+        std::vector<Sample> samples(static_cast<size_t>(program.sampleRegisters));
+        int x0 = (tileIndex % tilesX) * tile, y0 = (tileIndex / tilesX) * tile;
+        for (int y = y0; y < std::min(y0 + tile, height); ++y) {
+            for (int x = x0; x < std::min(x0 + tile, width); ++x) {
+                vec3 sum(Real(0));
+                int steps = 0, hits = 0;
+                for (int m = 0; m < aa; ++m) {
+                    for (int n = 0; n < aa; ++n) {
+                        // pixel centres at half-integers, rows counted from the bottom as in GL
+                        Real px = Real(x) + Real(0.5) + Kernel::offset(m, aa);
+                        Real py = Real(height - 1 - y) + Real(0.5) + Kernel::offset(n, aa);
+                        auto result = kernel.trace(points.data(), samples.data(), px, py);
+                        sum = sum + result.color;
+                        steps += result.steps;
+                        hits += result.hit ? 1 : 0;
+                    }
+                }
+                vec3 color = sum / Real(aa * aa);
+                size_t i = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
+                outcome.frame.color.rgb[3 * i + 0] = static_cast<float>(color.x);
+                outcome.frame.color.rgb[3 * i + 1] = static_cast<float>(color.y);
+                outcome.frame.color.rgb[3 * i + 2] = static_cast<float>(color.z);
+                outcome.frame.steps[i] = static_cast<float>(steps) / static_cast<float>(aa * aa);
+                outcome.frame.coverage[i] = static_cast<float>(hits) / static_cast<float>(aa * aa);
+            }
+        }
+        int done = ++tilesDone;
+        if (control.progress) {
+            std::lock_guard lock(progressMutex);
+            control.progress(done, tilesTotal);
+        }
+    };
+
+    int threads = control.threads > 0 ? control.threads : tbb::this_task_arena::max_concurrency();
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, tilesTotal, 1),
+                          [&](const tbb::blocked_range<int>& range) {
+                              for (int t = range.begin(); t != range.end(); ++t) renderTile(t);
+                          },
+                          tbb::simple_partitioner());
+    });
+    outcome.cancelled = cancelled.load();
+    return outcome;
+}
+
+}  // namespace
+
+RenderOutcome renderCpu(const program::Program& program, const RenderControl& control) {
+    if (control.precision == Precision::Double) {
+        return render<f64::Kernel>(program, control);
+    }
+    return render<f32::Kernel>(program, control);
+}
+
+double evaluateDistance(const program::Program& program, const glm::dvec3& marchPoint, Precision precision) {
+    auto evaluate = [&](const auto& kernel) {
+        using K = std::decay_t<decltype(kernel)>;
+        std::vector<typename K::Vec3> points(static_cast<size_t>(program.pointRegisters));
+        std::vector<typename K::SampleType> samples(static_cast<size_t>(program.sampleRegisters));
+        return static_cast<double>(kernel.map(points.data(), samples.data(), typename K::Vec3(marchPoint)).d);
+    };
+    if (precision == Precision::Double) {
+        return evaluate(f64::Kernel(program));
+    }
+    return evaluate(f32::Kernel(program));
+}
+
+}  // namespace sdfwb::cpu

@@ -1,0 +1,21 @@
+#pragma once
+// The one display encoding: linear radiance clamped to [0, 1], sRGB transfer
+// function, rounded to 8 bits. Image files, the viewport and every parity
+// figure go through it, so what a user sees is what a snapshot writes.
+
+#include <cstdint>
+#include <vector>
+
+#include "image/image.h"
+
+namespace sdfwb::image {
+
+std::uint8_t encodeSrgb8(float linear);
+
+// 3 bytes per pixel, same layout as image.rgb.
+std::vector<std::uint8_t> encodeSrgb8(const Image& image);
+
+// Inverse of the transfer function (for reading 8-bit images back as linear).
+float decodeSrgb8(std::uint8_t value);
+
+}  // namespace sdfwb::image

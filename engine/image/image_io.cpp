@@ -1,0 +1,99 @@
+#include "image/image_io.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <OpenImageIO/imageio.h>
+
+#include "image/encoding.h"
+#include "io/atomic_file.h"
+
+namespace sdfwb::image {
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+}  // namespace
+
+bool isDisplayEncoded(const std::filesystem::path& path) { return lowerExtension(path) != ".exr"; }
+
+void checkWritableFormat(const std::filesystem::path& path) {
+    static const std::vector<std::string> known = {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr"};
+    std::string ext = lowerExtension(path);
+    if (std::find(known.begin(), known.end(), ext) == known.end()) {
+        throw std::runtime_error(path.string() + ": unknown image format '" + (ext.empty() ? std::string("(none)") : ext) +
+                                 "' (use .png, .exr, .tif or .jpg)");
+    }
+}
+
+void writeImage(const std::filesystem::path& path, const Image& image, const Metadata& metadata) {
+    checkWritableFormat(path);
+    io::writeAtomically(path, [&](const std::filesystem::path& temporary) {
+        auto out = OIIO::ImageOutput::create(temporary.string());
+        if (!out) {
+            throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
+        }
+        bool display = isDisplayEncoded(path);
+        OIIO::ImageSpec spec(image.width, image.height, 3, display ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+        spec.attribute("oiio:ColorSpace", display ? "sRGB" : "Linear");
+        spec.attribute("Software", "SDF Workbench");
+        for (const auto& [key, value] : metadata) {
+            spec.attribute(key, value);
+        }
+        if (!out->open(temporary.string(), spec)) {
+            throw std::runtime_error("cannot write " + path.string() + ": " + out->geterror());
+        }
+        bool ok = false;
+        if (display) {
+            std::vector<std::uint8_t> bytes = encodeSrgb8(image);
+            ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+        } else {
+            ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
+        }
+        std::string error = ok ? "" : out->geterror();
+        if (!out->close() && ok) {
+            error = out->geterror();
+            ok = false;
+        }
+        if (!ok) {
+            throw std::runtime_error("cannot write " + path.string() + ": " + error);
+        }
+    });
+}
+
+Image readImage(const std::filesystem::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    Image image(spec.width, spec.height);
+    int channels = spec.nchannels;
+    bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
+    std::vector<float> pixels(image.pixelCount() * static_cast<size_t>(channels));
+    std::vector<std::uint8_t> bytes;
+    bool ok = false;
+    if (eightBit) {
+        bytes.resize(pixels.size());
+        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, bytes.data());
+    } else {
+        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
+    }
+    if (!ok) {
+        throw std::runtime_error("cannot read image " + path.string() + ": " + in->geterror());
+    }
+    in->close();
+    for (size_t i = 0; i < image.pixelCount(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            size_t source = i * static_cast<size_t>(channels) + static_cast<size_t>(std::min(c, channels - 1));
+            image.rgb[3 * i + static_cast<size_t>(c)] = eightBit ? decodeSrgb8(bytes[source]) : pixels[source];
+        }
+    }
+    return image;
+}
+
+}  // namespace sdfwb::image

@@ -1,0 +1,32 @@
+#pragma once
+// Reading and writing images through OpenImageIO. 8-bit formats (png, jpg, tif)
+// store the display encoding (encoding.h); exr stores linear float.
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image/image.h"
+
+namespace sdfwb::image {
+
+using Metadata = std::vector<std::pair<std::string, std::string>>;
+
+// Throws std::runtime_error with one line naming the problem when the extension
+// is not one of .png .jpg .jpeg .tif .tiff .exr.
+void checkWritableFormat(const std::filesystem::path& path);
+
+// Writes atomically (temporary sibling + rename): on failure nothing is left at
+// `path`. Metadata entries become image attributes (e.g. "sdfwb:backend").
+// Throws std::runtime_error naming the path and the cause.
+void writeImage(const std::filesystem::path& path, const Image& image, const Metadata& metadata = {});
+
+// Reads any image OpenImageIO can read as linear RGB (8-bit data is decoded
+// from sRGB). Throws std::runtime_error naming the path.
+Image readImage(const std::filesystem::path& path);
+
+// Whether the file stores the display encoding (8-bit) rather than linear floats.
+bool isDisplayEncoded(const std::filesystem::path& path);
+
+}  // namespace sdfwb::image

@@ -1,0 +1,29 @@
+#pragma once
+// Conservative axis-aligned bounds of scene subtrees, in the subtree's own frame.
+// Used for the Lipschitz step factor of twist and bend and for framing the camera.
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
+
+namespace sdfwb::program {
+
+struct Bounds {
+    glm::dvec3 min{0.0};
+    glm::dvec3 max{0.0};
+    bool empty = true;     // encloses nothing
+    bool infinite = false; // unbounded in some direction
+
+    static Bounds box(glm::dvec3 lo, glm::dvec3 hi) { return {lo, hi, false, false}; }
+    static Bounds unbounded() { return {glm::dvec3(0.0), glm::dvec3(0.0), false, true}; }
+    Bounds merged(const Bounds& other) const;
+    Bounds intersected(const Bounds& other) const;
+    Bounds expanded(double amount) const;
+    // Largest distance from the y axis (twist) or z axis (bend) of any bounded point.
+    double radiusAboutY() const;
+    double radiusAboutZ() const;
+};
+
+Bounds nodeBounds(const scene::Node& node);
+
+}  // namespace sdfwb::program

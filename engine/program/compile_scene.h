@@ -1,0 +1,20 @@
+#pragma once
+// Compiling a scene into a Program.
+
+#include "program/program.h"
+#include "scene/scene.h"
+
+namespace sdfwb::program {
+
+struct CompileOptions {
+    int width = 0;   // 0: the scene's render.width
+    int height = 0;  // 0: the scene's render.height
+    int aa = 0;      // 0: the scene's render.aa
+};
+
+// The scene must be valid (as loaded by sceneFromJson). Coordinates are shifted
+// so that the eye is the origin; translations are folded into that shift in
+// double precision, so a scene far from the world origin keeps float precision.
+Program compileScene(const scene::Scene& scene, const CompileOptions& options = {});
+
+}  // namespace sdfwb::program

@@ -1,0 +1,80 @@
+#pragma once
+// A scene compiled for rendering: a flat instruction list over point and sample
+// registers, a parameter buffer, and the per-render settings. Both backends
+// consume it: the CPU backend interprets the instructions, the GLSL backend
+// generates straight-line code from them. The instruction list and the
+// `structureKey` depend only on the scene's structure; all numbers live in
+// `params`, so a parameter edit changes `params` and nothing else.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "program/opcodes.h"
+
+namespace sdfwb::program {
+
+struct Instruction {
+    Opcode op;
+    int dst;       // register written (point register for Point ops, sample register otherwise)
+    int a;         // first operand register
+    int b;         // second operand register (Combine: sample, Post: point), else -1
+    int param;     // first parameter slot
+    int material;  // Shape: parameter slot of the material (4 slots), else -1
+    int variant;   // SmoothUnion/Intersection/Difference: SMOOTH_* code; else 0
+};
+
+// Parameter slots of one material: (ambient, shininess), (diffuse, 0), (specular, 0), (emission, 0).
+inline constexpr int kMaterialSlots = 4;
+
+struct LightParams {
+    glm::dvec3 direction;  // unit
+    glm::dvec3 color;
+    double softness;
+};
+
+struct TraceParams {
+    int maxSteps;
+    double maxDistance;
+    double epsilon;
+    double epsilonPerDistance;
+    int shadowMode;     // SHADOW_* of the shared tracer
+    int shadowSteps;
+    int aoSamples;
+    double aoDistance;
+    int lightingModel;  // LIGHTING_*
+    glm::dvec3 ambientLight;
+    glm::dvec3 background;
+};
+
+struct CameraParams {
+    glm::dvec3 origin;  // march coordinates: the eye is the origin, see docs/rendering.md
+    glm::dvec3 forward;
+    glm::dvec3 right;
+    glm::dvec3 up;
+    double tanHalfFov;
+};
+
+struct Program {
+    std::vector<Instruction> code;
+    std::vector<glm::dvec4> params;
+    int pointRegisters = 1;  // register 0 holds the evaluation point
+    int sampleRegisters = 1;
+    int result = 0;          // sample register holding the scene's distance
+
+    CameraParams camera;
+    TraceParams trace;
+    std::vector<LightParams> lights;
+    int width = 0;
+    int height = 0;
+    int aa = 1;
+
+    // Hash of everything that shapes generated code (instructions and the
+    // structural settings); equal keys can share a compiled shader.
+    std::uint64_t structureKey() const;
+};
+
+}  // namespace sdfwb::program

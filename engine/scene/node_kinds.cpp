@@ -1,0 +1,189 @@
+#include "scene/node_kinds.h"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace sdfwb::scene {
+namespace {
+
+using glm::dvec3;
+using enum FieldType;
+using enum Range;
+
+constexpr std::string_view kSmoothVariants[] = {"polynomial", "exponential", "power", "root"};
+constexpr std::string_view kMirrorAxes[] = {"x", "y", "z", "xy", "xz", "yz", "xyz"};
+
+FieldSpec real(std::string_view name, Range range, double value, std::string_view unit = "") {
+    return {name, Real, range, value, {}, unit};
+}
+FieldSpec vec3(std::string_view name, Range range, dvec3 value, std::string_view unit = "") {
+    return {name, Vec3, range, value, {}, unit};
+}
+FieldSpec choice(std::string_view name, std::span<const std::string_view> choices) {
+    return {name, Choice, Any, std::string(choices.front()), choices, ""};
+}
+FieldSpec material() { return {"material", Material, Any, std::string(), {}, ""}; }
+
+const std::array kSphere = {real("radius", Positive, 1.0), material()};
+const std::array kBox = {vec3("half_extents", Positive, dvec3(1.0)), material()};
+const std::array kRoundBox = {vec3("half_extents", Positive, dvec3(1.0)),
+                              real("radius", NonNegative, 0.1), material()};
+const std::array kPlane = {vec3("normal", NonZeroVector, dvec3(0, 1, 0)), real("offset", Any, 0.0),
+                           material()};
+const std::array kTorus = {real("major_radius", Positive, 1.0), real("minor_radius", Positive, 0.25),
+                           material()};
+const std::array kCone = {real("angle", OpenAngle90, 30.0, "degrees"), real("height", Positive, 1.0),
+                          material()};
+const std::array kEllipsoid = {vec3("radii", Positive, dvec3(1.0, 0.6, 0.8)), material()};
+const std::array kCylinder = {real("radius", Positive, 0.5), real("half_height", Positive, 1.0),
+                              material()};
+const std::array kCapsule = {vec3("a", Any, dvec3(0, -0.5, 0)), vec3("b", Any, dvec3(0, 0.5, 0)),
+                             real("radius", Positive, 0.25), material()};
+const std::array<FieldSpec, 0> kNoFields = {};
+const std::array kSmooth = {real("k", NonNegative, 0.25), choice("variant", kSmoothVariants),
+                            real("exponent", Integer2or3, 2.0)};
+const std::array kTranslate = {vec3("offset", Any, dvec3(0.0))};
+const std::array kRotate = {vec3("angles", Any, dvec3(0.0), "degrees")};
+const std::array kScale = {real("factor", Positive, 1.0)};
+const std::array kTwist = {real("k", Any, 1.0, "radians per unit")};
+const std::array kBend = {real("k", Any, 0.5, "radians per unit")};
+const std::array kRound = {real("radius", NonNegative, 0.1)};
+const std::array kDisplace = {real("amplitude", Any, 0.05), real("frequency", Any, 10.0, "radians per unit")};
+const std::array kElongate = {vec3("h", NonNegative, dvec3(0.5, 0.0, 0.0))};
+const std::array kMirror = {choice("axes", kMirrorAxes)};
+const std::array kRepeat = {vec3("spacing", NonNegative, dvec3(2.0, 0.0, 2.0)),
+                            vec3("counts", NonNegativeInteger, dvec3(1.0, 0.0, 1.0))};
+const std::array kRepeatInfinite = {vec3("period", NonNegative, dvec3(2.0, 0.0, 2.0))};
+
+using enum NodeKind;
+using enum NodeCategory;
+using enum DistanceQuality;
+
+const std::array<KindSpec, kNodeKindCount> kKinds = {{
+    {Sphere, "sphere", Primitive, Exact, 0, 0, kSphere},
+    {Box, "box", Primitive, Exact, 0, 0, kBox},
+    {RoundBox, "round_box", Primitive, Exact, 0, 0, kRoundBox},
+    {Plane, "plane", Primitive, Exact, 0, 0, kPlane},
+    {Torus, "torus", Primitive, Exact, 0, 0, kTorus},
+    {Cone, "cone", Primitive, Bound, 0, 0, kCone},
+    {Ellipsoid, "ellipsoid", Primitive, Bound, 0, 0, kEllipsoid},
+    {Cylinder, "cylinder", Primitive, Exact, 0, 0, kCylinder},
+    {Capsule, "capsule", Primitive, Exact, 0, 0, kCapsule},
+    {Union, "union", Boolean, Bound, 0, -1, kNoFields},
+    {Intersection, "intersection", Boolean, Bound, 0, -1, kNoFields},
+    {Difference, "difference", Boolean, Bound, 0, -1, kNoFields},
+    {SmoothUnion, "smooth_union", Boolean, Bound, 0, -1, kSmooth},
+    {SmoothIntersection, "smooth_intersection", Boolean, Bound, 0, -1, kSmooth},
+    {SmoothDifference, "smooth_difference", Boolean, Bound, 0, -1, kSmooth},
+    {Translate, "translate", Affine, Exact, 1, 1, kTranslate},
+    {Rotate, "rotate", Affine, Exact, 1, 1, kRotate},
+    {Scale, "scale", Affine, Exact, 1, 1, kScale},
+    {Twist, "twist", Deforming, Bound, 1, 1, kTwist},
+    {Bend, "bend", Deforming, Bound, 1, 1, kBend},
+    {Round, "round", Deforming, Exact, 1, 1, kRound},
+    {Displace, "displace", Deforming, Bound, 1, 1, kDisplace},
+    {Elongate, "elongate", Deforming, Exact, 1, 1, kElongate},
+    {Mirror, "mirror", Repetition, Bound, 1, 1, kMirror},
+    {Repeat, "repeat", Repetition, Bound, 1, 1, kRepeat},
+    {RepeatInfinite, "repeat_infinite", Repetition, Bound, 1, 1, kRepeatInfinite},
+}};
+
+std::string formatNumber(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+std::string checkScalar(Range range, double v) {
+    if (!std::isfinite(v)) {
+        return "must be a finite number";
+    }
+    switch (range) {
+    case Positive:
+        return v > 0 ? "" : "must be > 0 (got " + formatNumber(v) + ")";
+    case NonNegative:
+        return v >= 0 ? "" : "must be >= 0 (got " + formatNumber(v) + ")";
+    case Integer2or3:
+        return (v == 2 || v == 3) ? "" : "must be 2 or 3 (got " + formatNumber(v) + ")";
+    case NonNegativeInteger:
+        return (v >= 0 && v == std::floor(v) && v <= 1e6)
+                   ? ""
+                   : "must be a whole number >= 0 (got " + formatNumber(v) + ")";
+    case OpenAngle90:
+        return (v > 0 && v < 90) ? "" : "must be strictly between 0 and 90 degrees (got " + formatNumber(v) + ")";
+    case Any:
+    case NonZeroVector:
+        return "";
+    }
+    return "";
+}
+
+}  // namespace
+
+const KindSpec& kindSpec(NodeKind kind) { return kKinds[static_cast<size_t>(kind)]; }
+
+const KindSpec* findKind(std::string_view name) {
+    for (const KindSpec& spec : kKinds) {
+        if (spec.name == name) {
+            return &spec;
+        }
+    }
+    return nullptr;
+}
+
+std::span<const KindSpec> allKinds() { return kKinds; }
+
+int fieldIndex(const KindSpec& spec, std::string_view field) {
+    for (size_t i = 0; i < spec.fields.size(); ++i) {
+        if (spec.fields[i].name == field) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+std::string checkField(const FieldSpec& field, const FieldValue& value) {
+    switch (field.type) {
+    case Real:
+        if (!std::holds_alternative<double>(value)) {
+            return "must be a number";
+        }
+        return checkScalar(field.range, std::get<double>(value));
+    case Vec3: {
+        if (!std::holds_alternative<dvec3>(value)) {
+            return "must be an array of 3 numbers";
+        }
+        const dvec3& v = std::get<dvec3>(value);
+        for (int i = 0; i < 3; ++i) {
+            std::string problem = checkScalar(field.range, v[i]);
+            if (!problem.empty()) {
+                return "component " + std::to_string(i) + " " + problem;
+            }
+        }
+        if (field.range == NonZeroVector && v == dvec3(0.0)) {
+            return "must not be the zero vector";
+        }
+        return "";
+    }
+    case Choice: {
+        if (!std::holds_alternative<std::string>(value)) {
+            return "must be a string";
+        }
+        const std::string& s = std::get<std::string>(value);
+        std::string list;
+        for (std::string_view c : field.choices) {
+            if (c == s) {
+                return "";
+            }
+            list += (list.empty() ? "" : ", ") + std::string(c);
+        }
+        return "must be one of " + list + " (got \"" + s + "\")";
+    }
+    case Material:
+        return std::holds_alternative<std::string>(value) ? "" : "must be a material name";
+    }
+    return "";
+}
+
+}  // namespace sdfwb::scene

@@ -1,0 +1,77 @@
+#pragma once
+// The node kinds of the scene tree and their fields: one table drives JSON
+// loading and saving, validation, the compiler's field lookups and the editor.
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include <glm/vec3.hpp>
+
+namespace sdfwb::scene {
+
+enum class NodeKind {
+    // primitives
+    Sphere, Box, RoundBox, Plane, Torus, Cone, Ellipsoid, Cylinder, Capsule,
+    // booleans, folded in child order
+    Union, Intersection, Difference, SmoothUnion, SmoothIntersection, SmoothDifference,
+    // affine
+    Translate, Rotate, Scale,
+    // deforming
+    Twist, Bend, Round, Displace, Elongate,
+    // repetition
+    Mirror, Repeat, RepeatInfinite,
+};
+inline constexpr int kNodeKindCount = static_cast<int>(NodeKind::RepeatInfinite) + 1;
+
+enum class NodeCategory { Primitive, Boolean, Affine, Deforming, Repetition };
+
+// Whether a primitive's or operator's field is an exact signed distance or a bound
+// (|f| <= true distance, same sign). Tests check the label.
+enum class DistanceQuality { Exact, Bound };
+
+enum class FieldType {
+    Real,      // double
+    Vec3,      // glm::dvec3
+    Choice,    // std::string, one of FieldSpec::choices
+    Material,  // std::string, the name of a scene material ("" = the default material)
+};
+
+// Constraint on a Real field, or on every component of a Vec3 field.
+enum class Range { Any, Positive, NonNegative, Integer2or3, NonNegativeInteger, OpenAngle90, NonZeroVector };
+
+using FieldValue = std::variant<double, glm::dvec3, std::string>;
+
+struct FieldSpec {
+    std::string_view name;
+    FieldType type;
+    Range range;
+    FieldValue defaultValue;
+    std::span<const std::string_view> choices;  // Choice fields only
+    std::string_view unit;                       // for documentation and the editor
+};
+
+struct KindSpec {
+    NodeKind kind;
+    std::string_view name;  // JSON "kind"
+    NodeCategory category;
+    DistanceQuality quality;
+    int minChildren;
+    int maxChildren;  // -1: any number
+    std::span<const FieldSpec> fields;
+};
+
+const KindSpec& kindSpec(NodeKind kind);
+// nullptr when `name` is not a node kind.
+const KindSpec* findKind(std::string_view name);
+std::span<const KindSpec> allKinds();
+
+// Index of `field` in spec.fields, or -1.
+int fieldIndex(const KindSpec& spec, std::string_view field);
+
+// Empty when `value` satisfies the field's type and range; otherwise the reason,
+// phrased to follow "<path>: ", e.g. "must be > 0 (got -1)".
+std::string checkField(const FieldSpec& field, const FieldValue& value);
+
+}  // namespace sdfwb::scene

@@ -1,0 +1,128 @@
+#pragma once
+// The scene model: plain data, numbers as doubles, every field with a default.
+// The JSON format is documented in docs/scene-format.md.
+
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/node_kinds.h"
+
+namespace sdfwb::scene {
+
+inline constexpr std::string_view kFormatTag = "sdf-workbench-scene";
+inline constexpr int kFormatVersion = 1;
+
+struct Node {
+    NodeKind kind = NodeKind::Union;
+    std::string name;
+    std::vector<FieldValue> fields;  // one per kindSpec(kind).fields, in that order
+    std::vector<Node> children;
+
+    bool operator==(const Node&) const = default;
+
+    // A node of `kind` with every field at its default.
+    static Node make(NodeKind kind);
+
+    // Typed access by field name; the field must exist in the kind (checked).
+    double real(std::string_view field) const;
+    glm::dvec3 vec3(std::string_view field) const;
+    const std::string& text(std::string_view field) const;
+    void set(std::string_view field, FieldValue value);
+};
+
+// Orbit camera (thesis, section 2.1): the eye sits on a sphere around the target.
+struct Camera {
+    glm::dvec3 target{0.0, 0.5, 0.0};
+    double azimuth = 30.0;    // degrees, about +y, 0 looks along -z
+    double elevation = 20.0;  // degrees above the horizon, clamped short of +-90
+    double distance = 6.0;    // from target to eye
+    double fov = 45.0;        // vertical field of view, degrees
+
+    bool operator==(const Camera&) const = default;
+};
+
+struct Material {
+    std::string name;
+    glm::dvec3 ambient{0.05};   // R_A
+    glm::dvec3 diffuse{0.7};    // R_D
+    glm::dvec3 specular{0.3};   // R_E
+    double shininess = 32.0;    // alpha
+    glm::dvec3 emission{0.0};   // L_E
+
+    bool operator==(const Material&) const = default;
+};
+
+// Directional light.
+struct Light {
+    glm::dvec3 direction{0.5, 0.8, 0.3};  // towards the light; normalised when compiled
+    glm::dvec3 color{1.0};                // S_i
+    double softness = 8.0;                // k: 1.5 for a sun, 10 for a torch
+
+    bool operator==(const Light&) const = default;
+};
+inline constexpr int kMaxLights = 8;
+
+enum class ShadowMode { None, Hard, Soft, Improved };
+enum class LightingModel { BlinnPhong, Phong };
+enum class EpsilonMode { Absolute, Pixel };
+enum class GroundPattern { Plain, Checker, Grid };
+
+struct RenderSettings {
+    int width = 960;                 // pixels
+    int height = 540;                // pixels
+    int aa = 1;                      // AA x AA sub-samples per pixel, 1..8
+    int maxSteps = 256;              // primary march
+    double maxDistance = 100.0;      // scene units
+    double epsilon = 1e-3;           // hit epsilon: scene units, or pixels in Pixel mode
+    EpsilonMode epsilonMode = EpsilonMode::Absolute;
+    ShadowMode shadows = ShadowMode::Soft;
+    int shadowSteps = 64;
+    int aoSamples = 0;               // M; 0 disables ambient occlusion
+    double aoDistance = 1.0;         // scene units covered by the AO samples
+    LightingModel lighting = LightingModel::BlinnPhong;
+
+    bool operator==(const RenderSettings&) const = default;
+};
+
+struct Ground {
+    bool enabled = false;
+    double height = 0.0;             // the plane y = height
+    std::string material;            // "" = the default material
+    GroundPattern pattern = GroundPattern::Checker;
+    double cellSize = 1.0;           // scene units
+    double lineWidth = 0.04;         // scene units, grid pattern
+    glm::dvec3 secondColor{0.25};    // colour of alternate cells or grid lines
+
+    bool operator==(const Ground&) const = default;
+};
+
+struct Environment {
+    glm::dvec3 ambient{0.03};               // L_A
+    glm::dvec3 background{0.55, 0.65, 0.8};
+    Ground ground;
+
+    bool operator==(const Environment&) const = default;
+};
+
+struct Scene {
+    std::string name = "untitled";
+    std::string description;
+    Camera camera;
+    RenderSettings render;
+    Environment environment;
+    std::vector<Light> lights{Light{}};
+    std::vector<Material> materials;
+    Node root = Node::make(NodeKind::Union);
+
+    bool operator==(const Scene&) const = default;
+
+    // nullptr when no material has that name.
+    const Material* findMaterial(std::string_view name) const;
+};
+
+// The material used where a primitive names none ("").
+Material defaultMaterial();
+
+}  // namespace sdfwb::scene

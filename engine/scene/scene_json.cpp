@@ -1,0 +1,638 @@
+#include "scene/scene_json.h"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "io/atomic_file.h"
+
+namespace sdfwb::scene {
+
+using json = nlohmann::ordered_json;
+using glm::dvec3;
+
+SceneError::SceneError(std::vector<std::string> problems)
+    : std::runtime_error(problems.empty() ? "invalid scene" : problems.front()), problems_(std::move(problems)) {}
+
+namespace {
+
+constexpr std::string_view kShadowModes[] = {"none", "hard", "soft", "improved"};
+constexpr std::string_view kLightingModels[] = {"blinn_phong", "phong"};
+constexpr std::string_view kEpsilonModes[] = {"absolute", "pixel"};
+constexpr std::string_view kGroundPatterns[] = {"plain", "checker", "grid"};
+
+std::string describe(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+// Collects problems while reading; each reader call takes the JSON path of its value.
+class Reader {
+public:
+    std::vector<std::string> problems;
+
+    void fail(const std::string& path, const std::string& reason) { problems.push_back(path + ": " + reason); }
+
+    bool number(const json& value, const std::string& path, double& out) {
+        if (!value.is_number()) {
+            fail(path, "must be a number");
+            return false;
+        }
+        double v = value.get<double>();
+        if (!std::isfinite(v)) {
+            fail(path, "must be a finite number");
+            return false;
+        }
+        out = v;
+        return true;
+    }
+
+    void numberAtLeast(const json& value, const std::string& path, double minimum, bool strict, double& out) {
+        double v = 0;
+        if (!number(value, path, v)) {
+            return;
+        }
+        if (strict ? !(v > minimum) : !(v >= minimum)) {
+            fail(path, std::string("must be ") + (strict ? "> " : ">= ") + describe(minimum) + " (got " + describe(v) + ")");
+            return;
+        }
+        out = v;
+    }
+
+    void integer(const json& value, const std::string& path, int minimum, int maximum, int& out) {
+        double v = 0;
+        if (!number(value, path, v)) {
+            return;
+        }
+        if (v != std::floor(v) || v < minimum || v > maximum) {
+            fail(path, "must be a whole number from " + std::to_string(minimum) + " to " + std::to_string(maximum) +
+                           " (got " + describe(v) + ")");
+            return;
+        }
+        out = static_cast<int>(v);
+    }
+
+    bool vec3(const json& value, const std::string& path, dvec3& out) {
+        if (!value.is_array() || value.size() != 3) {
+            fail(path, "must be an array of 3 numbers");
+            return false;
+        }
+        dvec3 v;
+        for (int i = 0; i < 3; ++i) {
+            if (!number(value[static_cast<size_t>(i)], path + "[" + std::to_string(i) + "]", v[i])) {
+                return false;
+            }
+        }
+        out = v;
+        return true;
+    }
+
+    void colour(const json& value, const std::string& path, dvec3& out) {
+        dvec3 v;
+        if (!vec3(value, path, v)) {
+            return;
+        }
+        if (v.x < 0 || v.y < 0 || v.z < 0) {
+            fail(path, "colour components must be >= 0");
+            return;
+        }
+        out = v;
+    }
+
+    void string(const json& value, const std::string& path, std::string& out) {
+        if (!value.is_string()) {
+            fail(path, "must be a string");
+            return;
+        }
+        out = value.get<std::string>();
+    }
+
+    template <typename Enum, size_t N>
+    void choice(const json& value, const std::string& path, const std::string_view (&names)[N], Enum& out) {
+        std::string s;
+        if (!value.is_string()) {
+            fail(path, "must be a string");
+            return;
+        }
+        s = value.get<std::string>();
+        std::string list;
+        for (size_t i = 0; i < N; ++i) {
+            if (names[i] == s) {
+                out = static_cast<Enum>(i);
+                return;
+            }
+            list += (i ? ", " : "") + std::string(names[i]);
+        }
+        fail(path, "must be one of " + list + " (got \"" + s + "\")");
+    }
+};
+
+// Reads the members of one JSON object, then reports members nobody asked for.
+class ObjectReader {
+public:
+    ObjectReader(Reader& reader, const json& object, std::string path)
+        : reader_(reader), object_(object), path_(std::move(path)) {
+        valid_ = object.is_object();
+        if (!valid_) {
+            reader_.fail(path_, "must be an object");
+        }
+    }
+
+    bool valid() const { return valid_; }
+    std::string pathOf(std::string_view key) const { return path_.empty() ? std::string(key) : path_ + "." + std::string(key); }
+
+    // Calls read(value, path) if the member exists.
+    template <typename ReadFn>
+    void member(std::string_view key, ReadFn read) {
+        known_.insert(std::string(key));
+        if (!valid_) {
+            return;
+        }
+        auto it = object_.find(std::string(key));
+        if (it != object_.end()) {
+            read(*it, pathOf(key));
+        }
+    }
+
+    void finish(std::string_view what) {
+        if (!valid_) {
+            return;
+        }
+        for (auto it = object_.begin(); it != object_.end(); ++it) {
+            if (!known_.contains(it.key())) {
+                std::string list;
+                for (const std::string& k : orderedKnown_()) {
+                    list += (list.empty() ? "" : ", ") + k;
+                }
+                reader_.fail(pathOf(it.key()), "unknown field (" + std::string(what) + " has: " + list + ")");
+            }
+        }
+    }
+
+private:
+    std::vector<std::string> orderedKnown_() const { return {known_.begin(), known_.end()}; }
+
+    Reader& reader_;
+    const json& object_;
+    std::string path_;
+    std::set<std::string> known_;
+    bool valid_ = false;
+};
+
+FieldValue readFieldValue(Reader& reader, const FieldSpec& field, const json& value, const std::string& path) {
+    FieldValue result = field.defaultValue;
+    switch (field.type) {
+    case FieldType::Real: {
+        double v = 0;
+        if (reader.number(value, path, v)) {
+            result = v;
+        }
+        break;
+    }
+    case FieldType::Vec3: {
+        dvec3 v;
+        if (reader.vec3(value, path, v)) {
+            result = v;
+        }
+        break;
+    }
+    case FieldType::Choice:
+    case FieldType::Material: {
+        std::string s;
+        if (!value.is_string()) {
+            reader.fail(path, "must be a string");
+            return result;
+        }
+        result = value.get<std::string>();
+        break;
+    }
+    }
+    std::string problem = checkField(field, result);
+    if (!problem.empty()) {
+        reader.fail(path, problem);
+        return field.defaultValue;
+    }
+    return result;
+}
+
+Node readNode(Reader& reader, const json& value, const std::string& path) {
+    Node node;
+    if (!value.is_object()) {
+        reader.fail(path, "must be an object");
+        return node;
+    }
+    auto kindIt = value.find("kind");
+    if (kindIt == value.end() || !kindIt->is_string()) {
+        reader.fail(path + ".kind", "missing node kind (a string such as \"sphere\" or \"union\")");
+        return node;
+    }
+    const KindSpec* spec = findKind(kindIt->get<std::string>());
+    if (!spec) {
+        std::string list;
+        for (const KindSpec& k : allKinds()) {
+            list += (list.empty() ? "" : ", ") + std::string(k.name);
+        }
+        reader.fail(path + ".kind", "unknown node kind \"" + kindIt->get<std::string>() + "\" (known: " + list + ")");
+        return node;
+    }
+    node = Node::make(spec->kind);
+    ObjectReader object(reader, value, path);
+    object.member("kind", [](const json&, const std::string&) {});
+    object.member("name", [&](const json& v, const std::string& p) { reader.string(v, p, node.name); });
+    for (size_t i = 0; i < spec->fields.size(); ++i) {
+        const FieldSpec& field = spec->fields[i];
+        object.member(field.name, [&](const json& v, const std::string& p) {
+            node.fields[i] = readFieldValue(reader, field, v, p);
+        });
+    }
+    if (spec->maxChildren != 0) {
+        object.member("children", [&](const json& v, const std::string& p) {
+            if (!v.is_array()) {
+                reader.fail(p, "must be an array of nodes");
+                return;
+            }
+            for (size_t i = 0; i < v.size(); ++i) {
+                node.children.push_back(readNode(reader, v[i], p + "[" + std::to_string(i) + "]"));
+            }
+        });
+    }
+    object.finish(spec->name);
+    int count = static_cast<int>(node.children.size());
+    if (count < spec->minChildren || (spec->maxChildren >= 0 && count > spec->maxChildren)) {
+        std::string expected = spec->minChildren == spec->maxChildren
+                                   ? "exactly " + std::to_string(spec->minChildren)
+                                   : "at least " + std::to_string(spec->minChildren);
+        reader.fail(path + ".children", std::string(spec->name) + " needs " + expected + " child" +
+                                            (spec->minChildren == 1 && spec->maxChildren == 1 ? "" : "ren") +
+                                            " (got " + std::to_string(count) + ")");
+    }
+    return node;
+}
+
+void readCamera(Reader& reader, const json& value, const std::string& path, Camera& camera) {
+    ObjectReader object(reader, value, path);
+    object.member("target", [&](const json& v, const std::string& p) { reader.vec3(v, p, camera.target); });
+    object.member("azimuth", [&](const json& v, const std::string& p) { reader.number(v, p, camera.azimuth); });
+    object.member("elevation", [&](const json& v, const std::string& p) {
+        double e = camera.elevation;
+        if (reader.number(v, p, e)) {
+            if (e < -90 || e > 90) {
+                reader.fail(p, "must be from -90 to 90 degrees (got " + describe(e) + ")");
+            } else {
+                camera.elevation = e;
+            }
+        }
+    });
+    object.member("distance", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, true, camera.distance);
+    });
+    object.member("fov", [&](const json& v, const std::string& p) {
+        double f = camera.fov;
+        if (reader.number(v, p, f)) {
+            if (!(f > 0 && f < 180)) {
+                reader.fail(p, "must be strictly between 0 and 180 degrees (got " + describe(f) + ")");
+            } else {
+                camera.fov = f;
+            }
+        }
+    });
+    object.finish("camera");
+}
+
+void readRender(Reader& reader, const json& value, const std::string& path, RenderSettings& render) {
+    ObjectReader object(reader, value, path);
+    object.member("width", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 16384, render.width); });
+    object.member("height", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 16384, render.height); });
+    object.member("aa", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 8, render.aa); });
+    object.member("max_steps", [&](const json& v, const std::string& p) {
+        reader.integer(v, p, 1, 10000, render.maxSteps);
+    });
+    object.member("max_distance", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, true, render.maxDistance);
+    });
+    object.member("epsilon", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, true, render.epsilon);
+    });
+    object.member("epsilon_mode", [&](const json& v, const std::string& p) {
+        reader.choice(v, p, kEpsilonModes, render.epsilonMode);
+    });
+    object.member("shadows", [&](const json& v, const std::string& p) { reader.choice(v, p, kShadowModes, render.shadows); });
+    object.member("shadow_steps", [&](const json& v, const std::string& p) {
+        reader.integer(v, p, 1, 10000, render.shadowSteps);
+    });
+    object.member("ao_samples", [&](const json& v, const std::string& p) { reader.integer(v, p, 0, 64, render.aoSamples); });
+    object.member("ao_distance", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, true, render.aoDistance);
+    });
+    object.member("lighting", [&](const json& v, const std::string& p) {
+        reader.choice(v, p, kLightingModels, render.lighting);
+    });
+    object.finish("render");
+}
+
+void readGround(Reader& reader, const json& value, const std::string& path, Ground& ground) {
+    ObjectReader object(reader, value, path);
+    object.member("enabled", [&](const json& v, const std::string& p) {
+        if (!v.is_boolean()) {
+            reader.fail(p, "must be true or false");
+        } else {
+            ground.enabled = v.get<bool>();
+        }
+    });
+    object.member("height", [&](const json& v, const std::string& p) { reader.number(v, p, ground.height); });
+    object.member("material", [&](const json& v, const std::string& p) { reader.string(v, p, ground.material); });
+    object.member("pattern", [&](const json& v, const std::string& p) { reader.choice(v, p, kGroundPatterns, ground.pattern); });
+    object.member("cell_size", [&](const json& v, const std::string& p) { reader.numberAtLeast(v, p, 0, true, ground.cellSize); });
+    object.member("line_width", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, false, ground.lineWidth);
+    });
+    object.member("second_color", [&](const json& v, const std::string& p) { reader.colour(v, p, ground.secondColor); });
+    object.finish("ground");
+}
+
+void readEnvironment(Reader& reader, const json& value, const std::string& path, Environment& environment) {
+    ObjectReader object(reader, value, path);
+    object.member("ambient", [&](const json& v, const std::string& p) { reader.colour(v, p, environment.ambient); });
+    object.member("background", [&](const json& v, const std::string& p) { reader.colour(v, p, environment.background); });
+    object.member("ground", [&](const json& v, const std::string& p) { readGround(reader, v, p, environment.ground); });
+    object.finish("environment");
+}
+
+Light readLight(Reader& reader, const json& value, const std::string& path) {
+    Light light;
+    ObjectReader object(reader, value, path);
+    object.member("direction", [&](const json& v, const std::string& p) {
+        dvec3 d;
+        if (reader.vec3(v, p, d)) {
+            if (d == dvec3(0.0)) {
+                reader.fail(p, "must not be the zero vector");
+            } else {
+                light.direction = d;
+            }
+        }
+    });
+    object.member("color", [&](const json& v, const std::string& p) { reader.colour(v, p, light.color); });
+    object.member("softness", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, true, light.softness);
+    });
+    object.finish("light");
+    return light;
+}
+
+Material readMaterial(Reader& reader, const json& value, const std::string& path) {
+    Material material;
+    ObjectReader object(reader, value, path);
+    object.member("name", [&](const json& v, const std::string& p) { reader.string(v, p, material.name); });
+    object.member("ambient", [&](const json& v, const std::string& p) { reader.colour(v, p, material.ambient); });
+    object.member("diffuse", [&](const json& v, const std::string& p) { reader.colour(v, p, material.diffuse); });
+    object.member("specular", [&](const json& v, const std::string& p) { reader.colour(v, p, material.specular); });
+    object.member("shininess", [&](const json& v, const std::string& p) {
+        reader.numberAtLeast(v, p, 0, true, material.shininess);
+    });
+    object.member("emission", [&](const json& v, const std::string& p) { reader.colour(v, p, material.emission); });
+    object.finish("material");
+    if (material.name.empty() && object.valid()) {
+        reader.fail(path + ".name", "a material needs a non-empty name");
+    }
+    return material;
+}
+
+void checkMaterialReferences(Reader& reader, const Scene& scene, const Node& node, const std::string& path) {
+    const KindSpec& spec = kindSpec(node.kind);
+    int index = fieldIndex(spec, "material");
+    if (index >= 0) {
+        const std::string& name = std::get<std::string>(node.fields[static_cast<size_t>(index)]);
+        if (!name.empty() && !scene.findMaterial(name)) {
+            reader.fail(path + ".material", "no material named \"" + name + "\" in materials");
+        }
+    }
+    for (size_t i = 0; i < node.children.size(); ++i) {
+        checkMaterialReferences(reader, scene, node.children[i], path + ".children[" + std::to_string(i) + "]");
+    }
+}
+
+// Versions newer than this build cannot be read; older ones are migrated step by
+// step (version 1 is the first, so there are no steps yet).
+void checkVersion(Reader& reader, const json& value) {
+    auto format = value.find("format");
+    if (format == value.end() || !format->is_string() || format->get<std::string>() != kFormatTag) {
+        reader.fail("format", "must be \"" + std::string(kFormatTag) + "\"");
+    }
+    auto version = value.find("version");
+    if (version == value.end() || !version->is_number_integer()) {
+        reader.fail("version", "must be a whole number (this build reads version " + std::to_string(kFormatVersion) + ")");
+    } else if (version->get<int>() > kFormatVersion || version->get<int>() < 1) {
+        reader.fail("version", "unsupported version " + std::to_string(version->get<int>()) +
+                                   " (this build reads versions 1 to " + std::to_string(kFormatVersion) + ")");
+    }
+}
+
+std::string lineColumnMessage(std::string_view text, const nlohmann::json::parse_error& error) {
+    size_t line = 1, column = 1;
+    size_t end = std::min(error.byte == 0 ? 0 : error.byte - 1, text.size());
+    for (size_t i = 0; i < end; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    std::string what = error.what();
+    size_t reason = what.find(": ", what.find("parse error"));
+    std::string detail = reason == std::string::npos ? what : what.substr(reason + 2);
+    return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": invalid JSON: " + detail;
+}
+
+json vec3Json(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+template <size_t N, typename Enum>
+std::string nameOf(const std::string_view (&names)[N], Enum value) {
+    return std::string(names[static_cast<size_t>(value)]);
+}
+
+}  // namespace
+
+Node nodeFromJson(const json& value, const std::string& path) {
+    Reader reader;
+    Node node = readNode(reader, value, path);
+    if (!reader.problems.empty()) {
+        throw SceneError(reader.problems);
+    }
+    return node;
+}
+
+Scene sceneFromJson(const json& value) {
+    Reader reader;
+    Scene scene;
+    if (!value.is_object()) {
+        throw SceneError({"(top level): a scene must be a JSON object"});
+    }
+    checkVersion(reader, value);
+    ObjectReader object(reader, value, "");
+    object.member("format", [](const json&, const std::string&) {});
+    object.member("version", [](const json&, const std::string&) {});
+    object.member("name", [&](const json& v, const std::string& p) { reader.string(v, p, scene.name); });
+    object.member("description", [&](const json& v, const std::string& p) { reader.string(v, p, scene.description); });
+    object.member("camera", [&](const json& v, const std::string& p) { readCamera(reader, v, p, scene.camera); });
+    object.member("render", [&](const json& v, const std::string& p) { readRender(reader, v, p, scene.render); });
+    object.member("environment", [&](const json& v, const std::string& p) {
+        readEnvironment(reader, v, p, scene.environment);
+    });
+    object.member("lights", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) {
+            reader.fail(p, "must be an array of lights");
+            return;
+        }
+        if (v.size() > static_cast<size_t>(kMaxLights)) {
+            reader.fail(p, "at most " + std::to_string(kMaxLights) + " lights (got " + std::to_string(v.size()) + ")");
+        }
+        scene.lights.clear();
+        for (size_t i = 0; i < v.size(); ++i) {
+            scene.lights.push_back(readLight(reader, v[i], p + "[" + std::to_string(i) + "]"));
+        }
+    });
+    object.member("materials", [&](const json& v, const std::string& p) {
+        if (!v.is_array()) {
+            reader.fail(p, "must be an array of materials");
+            return;
+        }
+        std::set<std::string> names;
+        for (size_t i = 0; i < v.size(); ++i) {
+            std::string itemPath = p + "[" + std::to_string(i) + "]";
+            Material m = readMaterial(reader, v[i], itemPath);
+            if (!m.name.empty() && !names.insert(m.name).second) {
+                reader.fail(itemPath + ".name", "duplicate material name \"" + m.name + "\"");
+            }
+            scene.materials.push_back(std::move(m));
+        }
+    });
+    object.member("root", [&](const json& v, const std::string& p) { scene.root = readNode(reader, v, p); });
+    object.finish("a scene");
+    checkMaterialReferences(reader, scene, scene.root, "root");
+    if (!scene.environment.ground.material.empty() && !scene.findMaterial(scene.environment.ground.material)) {
+        reader.fail("environment.ground.material",
+                    "no material named \"" + scene.environment.ground.material + "\" in materials");
+    }
+    if (!reader.problems.empty()) {
+        throw SceneError(reader.problems);
+    }
+    return scene;
+}
+
+Scene parseScene(std::string_view text) {
+    json value;
+    try {
+        value = json::parse(text.begin(), text.end());
+    } catch (const nlohmann::json::parse_error& error) {
+        throw SceneError({lineColumnMessage(text, error)});
+    }
+    return sceneFromJson(value);
+}
+
+Scene loadSceneFile(const std::filesystem::path& path) {
+    std::string text;
+    try {
+        text = io::readTextFile(path);
+    } catch (const std::exception& error) {
+        throw SceneError({error.what()});
+    }
+    try {
+        return parseScene(text);
+    } catch (const SceneError& error) {
+        std::vector<std::string> problems;
+        for (const std::string& problem : error.problems()) {
+            problems.push_back(path.string() + ": " + problem);
+        }
+        throw SceneError(problems);
+    }
+}
+
+json nodeToJson(const Node& node) {
+    const KindSpec& spec = kindSpec(node.kind);
+    json out;
+    out["kind"] = spec.name;
+    if (!node.name.empty()) {
+        out["name"] = node.name;
+    }
+    for (size_t i = 0; i < spec.fields.size(); ++i) {
+        const FieldValue& value = node.fields[i];
+        if (const double* d = std::get_if<double>(&value)) {
+            out[std::string(spec.fields[i].name)] = *d;
+        } else if (const dvec3* v = std::get_if<dvec3>(&value)) {
+            out[std::string(spec.fields[i].name)] = vec3Json(*v);
+        } else {
+            out[std::string(spec.fields[i].name)] = std::get<std::string>(value);
+        }
+    }
+    if (spec.maxChildren != 0) {
+        json children = json::array();
+        for (const Node& child : node.children) {
+            children.push_back(nodeToJson(child));
+        }
+        out["children"] = std::move(children);
+    }
+    return out;
+}
+
+json sceneToJson(const Scene& scene) {
+    json out;
+    out["format"] = kFormatTag;
+    out["version"] = kFormatVersion;
+    out["name"] = scene.name;
+    out["description"] = scene.description;
+    const Camera& c = scene.camera;
+    out["camera"] = {{"target", vec3Json(c.target)}, {"azimuth", c.azimuth}, {"elevation", c.elevation},
+                     {"distance", c.distance}, {"fov", c.fov}};
+    const RenderSettings& r = scene.render;
+    out["render"] = {{"width", r.width},
+                     {"height", r.height},
+                     {"aa", r.aa},
+                     {"max_steps", r.maxSteps},
+                     {"max_distance", r.maxDistance},
+                     {"epsilon", r.epsilon},
+                     {"epsilon_mode", nameOf(kEpsilonModes, r.epsilonMode)},
+                     {"shadows", nameOf(kShadowModes, r.shadows)},
+                     {"shadow_steps", r.shadowSteps},
+                     {"ao_samples", r.aoSamples},
+                     {"ao_distance", r.aoDistance},
+                     {"lighting", nameOf(kLightingModels, r.lighting)}};
+    const Environment& e = scene.environment;
+    const Ground& g = e.ground;
+    out["environment"] = {{"ambient", vec3Json(e.ambient)},
+                          {"background", vec3Json(e.background)},
+                          {"ground",
+                           {{"enabled", g.enabled},
+                            {"height", g.height},
+                            {"material", g.material},
+                            {"pattern", nameOf(kGroundPatterns, g.pattern)},
+                            {"cell_size", g.cellSize},
+                            {"line_width", g.lineWidth},
+                            {"second_color", vec3Json(g.secondColor)}}}};
+    json lights = json::array();
+    for (const Light& l : scene.lights) {
+        lights.push_back({{"direction", vec3Json(l.direction)}, {"color", vec3Json(l.color)}, {"softness", l.softness}});
+    }
+    out["lights"] = std::move(lights);
+    json materials = json::array();
+    for (const Material& m : scene.materials) {
+        materials.push_back({{"name", m.name},
+                             {"ambient", vec3Json(m.ambient)},
+                             {"diffuse", vec3Json(m.diffuse)},
+                             {"specular", vec3Json(m.specular)},
+                             {"shininess", m.shininess},
+                             {"emission", vec3Json(m.emission)}});
+    }
+    out["materials"] = std::move(materials);
+    out["root"] = nodeToJson(scene.root);
+    return out;
+}
+
+std::string serializeScene(const Scene& scene) { return sceneToJson(scene).dump(2) + "\n"; }
+
+void saveSceneFile(const Scene& scene, const std::filesystem::path& path) {
+    io::writeTextAtomically(path, serializeScene(scene));
+}
+
+}  // namespace sdfwb::scene

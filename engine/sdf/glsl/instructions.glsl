@@ -1,0 +1,69 @@
+// One function per instruction of the compiled scene (engine/program/opcodes.h):
+// the GLSL generator emits a call to it, the CPU evaluator makes the same call,
+// so an instruction means the same thing in both backends. Parameters arrive as
+// the vec4 slots of the parameter buffer; layouts are listed in opcodes.h.
+
+SHARED_FN vec3 xyz(vec4 q) { return vec3(q.x, q.y, q.z); }
+
+SHARED_FN Material materialFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3));
+}
+
+// ---- Point: P[dst] = f(P[a], slots) ----
+SHARED_FN vec3 instTranslate(vec3 p, vec4 q0) { return opTranslate(p, xyz(q0)); }
+SHARED_FN vec3 instRotate(vec3 p, vec4 q0, vec4 q1, vec4 q2) { return opRotate(p, xyz(q0), xyz(q1), xyz(q2)); }
+SHARED_FN vec3 instScale(vec3 p, vec4 q0) { return opScale(p, q0.x); }
+SHARED_FN vec3 instTwist(vec3 p, vec4 q0) { return opTwist(p, q0.x); }
+SHARED_FN vec3 instBend(vec3 p, vec4 q0) { return opBend(p, q0.x); }
+SHARED_FN vec3 instElongate(vec3 p, vec4 q0) { return opElongate(p, xyz(q0)); }
+SHARED_FN vec3 instMirror(vec3 p, vec4 q0) { return opMirror(p, xyz(q0)); }
+SHARED_FN vec3 instRepeat(vec3 p, vec4 q0, vec4 q1) { return opRepeat(p, xyz(q0), xyz(q1)); }
+SHARED_FN vec3 instRepeatInfinite(vec3 p, vec4 q0) { return opRepeatInfinite(p, xyz(q0)); }
+
+// ---- Shape: S[dst] = Sample(f(P[a], slots), material) ----
+SHARED_FN real instSphere(vec3 p, vec4 q0) { return sdSphere(p, q0.x); }
+SHARED_FN real instBox(vec3 p, vec4 q0) { return sdBox(p, xyz(q0)); }
+SHARED_FN real instRoundBox(vec3 p, vec4 q0) { return sdRoundBox(p, xyz(q0), q0.w); }
+SHARED_FN real instPlane(vec3 p, vec4 q0) { return sdPlane(p, xyz(q0), q0.w); }
+SHARED_FN real instTorus(vec3 p, vec4 q0) { return sdTorus(p, q0.x, q0.y); }
+SHARED_FN real instCone(vec3 p, vec4 q0) { return sdCone(p, vec2(q0.x, q0.y), q0.z); }
+SHARED_FN real instEllipsoid(vec3 p, vec4 q0) { return sdEllipsoid(p, xyz(q0)); }
+SHARED_FN real instCylinder(vec3 p, vec4 q0) { return sdCylinder(p, q0.x, q0.y); }
+SHARED_FN real instCapsule(vec3 p, vec4 q0, vec4 q1) { return sdCapsule(p, xyz(q0), xyz(q1), q0.w); }
+
+// The ground plane y = height, in march coordinates: q0 = (height - eye.y, pattern),
+// q1 = (eye, cell size), q2 = (second colour, line width).
+SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
+    real d = p.y - q0.x;
+    Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2));
+    return Sample(d, m);
+}
+
+// ---- Combine: S[dst] = f(S[a], S[b], slot) ----
+SHARED_FN Sample instUnion(Sample a, Sample b) { return blendSamples(a, b, hardMin(a.d, b.d)); }
+SHARED_FN Sample instIntersection(Sample a, Sample b) { return blendSamples(a, b, hardMax(a.d, b.d)); }
+SHARED_FN Sample instDifference(Sample a, Sample b) { return blendSamples(a, b, hardMax(a.d, -b.d)); }
+// q0 = (k, exponent)
+SHARED_FN Sample instSmoothUnion(Sample a, Sample b, vec4 q0, int variant) {
+    return blendSamples(a, b, smoothMin(variant, a.d, b.d, q0.x, q0.y));
+}
+SHARED_FN Sample instSmoothIntersection(Sample a, Sample b, vec4 q0, int variant) {
+    return blendSamples(a, b, smoothMax(variant, a.d, b.d, q0.x, q0.y));
+}
+SHARED_FN Sample instSmoothDifference(Sample a, Sample b, vec4 q0, int variant) {
+    return blendSamples(a, b, smoothMax(variant, a.d, -b.d, q0.x, q0.y));
+}
+
+// ---- Post: S[dst] = f(S[a], P[b], slot) ----
+SHARED_FN Sample withDistance(Sample s, real d) { return Sample(d, s.material); }
+SHARED_FN Sample instScaleDistance(Sample s, vec3 p, vec4 q0) { return withDistance(s, s.d * q0.x); }
+SHARED_FN Sample instRoundDistance(Sample s, vec3 p, vec4 q0) { return withDistance(s, s.d - q0.x); }
+// q0 = (amplitude, frequency, step factor)
+SHARED_FN Sample instDisplace(Sample s, vec3 p, vec4 q0) {
+    return withDistance(s, (s.d + displacementPattern(p, q0.x, q0.y)) * q0.z);
+}
+SHARED_FN Sample instStepScale(Sample s, vec3 p, vec4 q0) { return withDistance(s, s.d * q0.x); }
+
+// ---- Constant ----
+// "Nothing here": far beyond any max distance.
+SHARED_FN Sample instEmpty(Material base) { return Sample(real(1e10), base); }
