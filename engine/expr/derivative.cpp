@@ -1,34 +1,8 @@
 #include "expr/derivative.h"
 
-#include <algorithm>
 #include <vector>
 
 namespace sdfwb::expr {
-namespace {
-
-// Nodes `root` depends on, in increasing (topological) order.
-std::vector<NodeId> dependencies(const Graph& g, NodeId root) {
-  std::vector<bool> seen(root + 1, false);
-  std::vector<NodeId> stack{root};
-  seen[root] = true;
-  std::vector<NodeId> order;
-  while (!stack.empty()) {
-    const NodeId id = stack.back();
-    stack.pop_back();
-    order.push_back(id);
-    const Node& n = g.node(id);
-    for (int i = 0; i < opInfo(n.op).arity; ++i) {
-      if (!seen[n.args[i]]) {
-        seen[n.args[i]] = true;
-        stack.push_back(n.args[i]);
-      }
-    }
-  }
-  std::sort(order.begin(), order.end());
-  return order;
-}
-
-}  // namespace
 
 NodeId derivative(Graph& g, NodeId root, std::uint32_t variable) {
   std::vector<NodeId> d(root + 1, 0);

@@ -1,5 +1,6 @@
 #include "expr/graph.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -67,6 +68,28 @@ double nearestDouble(const mpq_class& q) {
   if (dropped > half || (dropped == half && (sticky || mpz_odd_p(mantissa.get_mpz_t())))) ++mantissa;
   const double magnitude = std::ldexp(mantissa.get_d(), static_cast<int>(drop - k));
   return sgn(q) < 0 ? -magnitude : magnitude;
+}
+
+std::vector<NodeId> dependencies(const Graph& graph, NodeId root, const std::function<bool(NodeId)>& isLeaf) {
+  std::vector<bool> seen(root + 1, false);
+  std::vector<NodeId> stack{root};
+  seen[root] = true;
+  std::vector<NodeId> order;
+  while (!stack.empty()) {
+    const NodeId id = stack.back();
+    stack.pop_back();
+    order.push_back(id);
+    if (isLeaf && isLeaf(id)) continue;
+    const Node& n = graph.node(id);
+    for (int i = 0; i < opInfo(n.op).arity; ++i) {
+      if (!seen[n.args[i]]) {
+        seen[n.args[i]] = true;
+        stack.push_back(n.args[i]);
+      }
+    }
+  }
+  std::sort(order.begin(), order.end());
+  return order;
 }
 
 std::size_t Graph::KeyHash::operator()(const Key& k) const {

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -137,6 +138,11 @@ class Graph {
   std::unordered_map<Key, NodeId, KeyHash> nodeIndex_;
   Origin origin_;
 };
+
+// The nodes `root` depends on, itself included, in increasing (topological)
+// order. The operands of nodes for which `isLeaf` returns true are not followed.
+std::vector<NodeId> dependencies(const Graph& graph, NodeId root,
+                                 const std::function<bool(NodeId)>& isLeaf = {});
 
 // The double nearest to q (ties to even), unlike mpq_get_d, which truncates.
 double nearestDouble(const mpq_class& q);

@@ -1,0 +1,51 @@
+#include "expr/to_algebra.h"
+
+#include <stdexcept>
+
+#include "expr/formula.h"
+#include "expr/graph_to_fractions.h"
+
+namespace sdfwb::expr {
+namespace {
+
+GraphToFractions::Options byName(const Graph& graph, const algebra::RingPtr& ring) {
+  GraphToFractions::Options options;
+  for (const std::string& name : graph.variables()) {
+    const auto index = ring->index_of(name);
+    options.variables.push_back(index ? std::optional(ring->var(*index)) : std::nullopt);
+  }
+  options.unmappedVariable = [](const std::string& name) -> std::string {
+    throw std::invalid_argument("variable '" + name + "' is not in the ring");
+  };
+  return options;
+}
+
+}  // namespace
+
+RationalFunction toRationalFunction(const Graph& graph, NodeId node, const algebra::RingPtr& ring) {
+  FractionArithmetic arithmetic(ring);
+  GraphToFractions converter(graph, arithmetic, byName(graph, ring));
+  auto [numerator, denominator] = arithmetic.reduce(converter.convert(node, graph.origin(node).where));
+  return {std::move(numerator), std::move(denominator)};
+}
+
+algebra::Polynomial toPolynomial(const Graph& graph, NodeId node, const algebra::RingPtr& ring) {
+  FractionArithmetic arithmetic(ring);
+  GraphToFractions converter(graph, arithmetic, byName(graph, ring));
+  auto [numerator, denominator] = arithmetic.reduce(converter.convert(node, graph.origin(node).where));
+  if (!denominator.is_constant()) {
+    const auto& division = converter.firstNonConstantDivision();
+    throw Error(division ? division->where : graph.origin(node).where,
+                "division by a non-constant expression: the formula is not a polynomial");
+  }
+  return numerator / denominator.leading_coefficient();
+}
+
+std::vector<algebra::Polynomial> parsePolynomials(std::string_view source, const algebra::RingPtr& ring) {
+  const ExpressionList list = compileExpressionList(source, ring->variables());
+  std::vector<algebra::Polynomial> result;
+  for (const NodeId value : list.values) result.push_back(toPolynomial(list.graph, value, ring));
+  return result;
+}
+
+}  // namespace sdfwb::expr
