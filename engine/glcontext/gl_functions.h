@@ -7,6 +7,12 @@
 // goes through a GlFunctions table filled from the loader of the context it
 // belongs to: `gl.CompileShader(shader)`. There are no global gl symbols.
 
+// GL/gl.h declares GL 1.0/1.1 and defines GL_VERSION_1_1, so a glcorearb.h
+// included after it skips the typedefs of those functions (PFNGLDRAWARRAYSPROC
+// and others), and the table below fails to compile with puzzling errors.
+#if defined(__gl_h_) && !defined(__gl_glcorearb_h_)
+#error "GL/gl.h was included before glcontext/gl_functions.h; define GLFW_INCLUDE_NONE before <GLFW/glfw3.h>, or include this header first"
+#endif
 #include <GL/glcorearb.h>
 
 #include <functional>

@@ -527,6 +527,10 @@ Scene parseScene(std::string_view text) {
         value = json::parse(text.begin(), text.end());
     } catch (const nlohmann::json::parse_error& error) {
         throw SceneError({lineColumnMessage(text, error)});
+    } catch (const nlohmann::json::out_of_range& error) {
+        // number overflow: JSON has no infinities, a finite number is required
+        std::string what = error.what();
+        throw SceneError({"invalid JSON: " + what.substr(what.find("] ") + 2) + " (numbers must be finite)"});
     }
     return sceneFromJson(value);
 }

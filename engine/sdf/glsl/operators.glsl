@@ -49,7 +49,8 @@ SHARED_FN Blend sminExponential(real a, real b, real k) {
 
 // Power: ((a^s b^s) / (a^s + b^s))^(1/s) with s = 1 / k, written as
 // m * (1 + (m/M)^s)^(-1/s) for m = min, M = max. Defined for a, b > 0 only:
-// where either operand is <= 0 it is the hard minimum.
+// where either operand is <= 0 it is the hard minimum. The weight of b is
+// d(result)/db = (result / b)^(s + 1).
 SHARED_FN Blend sminPower(real a, real b, real k) {
     if (!(k > real(0)) || a <= real(0) || b <= real(0)) {
         return hardMin(a, b);
@@ -58,11 +59,7 @@ SHARED_FN Blend sminPower(real a, real b, real k) {
     real m = min(a, b);
     real ratioPow = exp2(s * log2(m / max(a, b)));
     real d = m * exp2(-log2(real(1) + ratioPow) / s);
-    real wOfLarger = ratioPow / (real(1) + ratioPow);
-    if (a <= b) {
-        return Blend(d, wOfLarger);
-    }
-    return Blend(d, real(1) - wOfLarger);
+    return Blend(d, exp2((s + real(1)) * log2(d / b)));
 }
 
 // Root: (a + b - sqrt((a-b)^2 + c)) / 2 with c = k^2 / 4.

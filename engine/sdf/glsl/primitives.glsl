@@ -31,13 +31,15 @@ SHARED_FN real sdCone(vec3 p, vec2 sinCos, real height) {
     return max(dot2(sinCos, vec2(radial, p.y)), -height - p.y);
 }
 
-// bound (thesis, Example 1.2): k0 * (k0 - 1) / k1
+// bound: outside, the thesis's k0 * (k0 - 1) / k1 (Example 1.2). Inside that
+// formula is no bound (its Lipschitz constant reaches ~7 near the centre), so
+// there (k0 - 1) * min radius, which is 1-Lipschitz and meets it at the surface.
 SHARED_FN real sdEllipsoid(vec3 p, vec3 radii) {
     real k0 = length3(p / radii);
-    real k1 = length3(p / (radii * radii));
-    if (k1 == real(0)) {
-        return -min(radii.x, min(radii.y, radii.z));
+    if (k0 < real(1)) {
+        return (k0 - real(1)) * min(radii.x, min(radii.y, radii.z));
     }
+    real k1 = length3(p / (radii * radii));
     return k0 * (k0 - real(1)) / k1;
 }
 

@@ -1,0 +1,35 @@
+// Every shipped scene renders on the CPU backend without NaN or infinite pixels.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cpu/cpu_renderer.h"
+#include "program/compile_scene.h"
+#include "support/scene_files.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb {
+namespace {
+
+class EveryScene : public ::testing::TestWithParam<std::filesystem::path> {};
+
+TEST_P(EveryScene, RendersFinitePixels) {
+    scene::Scene s = scene::loadSceneFile(GetParam());
+    program::Program p = program::compileScene(s, {.width = 64, .height = 36, .aa = 1});
+    cpu::RenderOutcome outcome = cpu::renderCpu(p);
+    ASSERT_FALSE(outcome.cancelled);
+    size_t nonFinite = 0;
+    for (float v : outcome.frame.color.rgb) nonFinite += std::isfinite(v) ? 0 : 1;
+    EXPECT_EQ(nonFinite, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::allSceneFiles()),
+                         [](const ::testing::TestParamInfo<std::filesystem::path>& info) {
+                             std::string name = std::filesystem::relative(info.param, SDFWB_SOURCE_DIR "/scenes").string();
+                             for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+}  // namespace
+}  // namespace sdfwb
