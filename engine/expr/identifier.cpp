@@ -28,8 +28,4 @@ bool isIdentifier(std::string_view name) { return identifierProblem(name).empty(
 
 bool isCoordinate(std::string_view name) { return name == "x" || name == "y" || name == "z"; }
 
-std::string auxiliaryName(std::string_view stem, int index) {
-  return "_" + std::string(stem) + std::to_string(index);
-}
-
 }  // namespace sdfwb::expr

@@ -13,6 +13,8 @@ namespace sdfwb::expr {
 // a built-in function such as `sin`). Meaning is contextual, not lexical: in a
 // formula over space `p`, `x`, `y`, `z` are the point and its coordinates; in a
 // parametrization every identifier other than x, y, z is a parameter.
+// Internal variables (half-angle parameters, ...) are named by
+// algebra::internal_variable_name, with a leading '$' no identifier has.
 bool isIdentifier(std::string_view name);
 
 // Why `name` is not an identifier, as a phrase for an error message
@@ -21,10 +23,5 @@ std::string identifierProblem(std::string_view name);
 
 // x, y or z: the coordinates of space.
 bool isCoordinate(std::string_view name);
-
-// A name for an auxiliary variable (a half-angle parameter, the y of a
-// rational implicitization) that can never collide with a user's identifier:
-// it starts with an underscore, which identifiers cannot.
-std::string auxiliaryName(std::string_view stem, int index);
 
 }  // namespace sdfwb::expr

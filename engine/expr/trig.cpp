@@ -117,7 +117,9 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
     }
   }
 
-  // Each angle's scale: gcd of the coefficients' numerators over the lcm of their denominators.
+  // Each angle's scale m (parameter = m*psi): the lcm of the coefficients'
+  // denominators over the gcd of their numerators, so each coefficient times m
+  // is an integer and these integers are coprime.
   std::map<std::uint32_t, mpq_class> scales;
   for (const auto& [id, form] : trigArguments) {
     for (const auto& [v, c] : form.coefficients) {
@@ -131,6 +133,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
       }
     }
   }
+  for (auto& [v, gcdOverLcm] : scales) gcdOverLcm = 1 / gcdOverLcm;
 
   // The ring: user parameters in order, each angle replaced by its new parameters.
   TrigConversion result;
@@ -178,7 +181,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
     Fraction scale = arithmetic.constant(1);
     for (const auto& [v, c] : form.coefficients) {
       const Angle& angle = angles.at(v);
-      const mpq_class multiple = c / angle.scale;  // an integer by the choice of scale
+      const mpq_class multiple = c * angle.scale;  // an integer by the choice of scale
       const long n = multiple.get_num().get_si();
       if (abs(multiple.get_num()) > kMaxAngleMultiple) {
         throw Error(g.origin(id).where, "the multiples of '" + g.variables()[v] +
