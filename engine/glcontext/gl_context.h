@@ -42,8 +42,10 @@ class GlContext {
   // current there; it must not be current on any other thread.
   virtual ~GlContext() = default;
 
-  // Makes this context current on the calling thread (replacing whatever was
-  // current there). Throws GlError if the provider refuses.
+  // Makes this context current on the calling thread, replacing a context of
+  // the same provider. A context of another provider (GLFW versus OSMesa)
+  // must be released first: Mesa's GLX and OSMesa share one per-thread
+  // dispatch (docs/toolchain-notes.md). Throws GlError if the provider refuses.
   virtual void makeCurrent() = 0;
 
   // Leaves no context current on the calling thread if this one is current

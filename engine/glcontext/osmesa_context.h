@@ -4,6 +4,10 @@
 //
 // libOSMesa is loaded with dlopen, never linked: it exports the same gl*
 // symbols as libGL, and the one executable also links GLFW for the GUI.
+// OSMesa and GLFW contexts may live in one process on different threads;
+// on one thread, release the GLFW context (glfwMakeContextCurrent(nullptr))
+// before making an OSMesa context current, and call it again before making
+// the window current afterwards (docs/toolchain-notes.md, "GL and OSMesa").
 
 #include <memory>
 #include <string>
