@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/compare_command.h"
+#include "app/parity_command.h"
 #include "app/render_command.h"
 
 namespace {
@@ -24,9 +26,19 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);
     sdfwb::app::RenderArguments renderArguments;
     CLI::App* render = sdfwb::app::addRenderCommand(app, renderArguments);
+    sdfwb::app::CompareArguments compareArguments;
+    CLI::App* compare = sdfwb::app::addCompareCommand(app, compareArguments);
+    sdfwb::app::ParityArguments parityArguments;
+    CLI::App* parity = sdfwb::app::addParityCommand(app, parityArguments);
     CLI11_PARSE(app, argc, argv);
     if (render->parsed()) {
         return sdfwb::app::runRender(renderArguments);
+    }
+    if (compare->parsed()) {
+        return sdfwb::app::runCompare(compareArguments);
+    }
+    if (parity->parsed()) {
+        return sdfwb::app::runParity(parityArguments);
     }
     return runDefaultJob();
 }

@@ -9,7 +9,8 @@
 
 #include "app/progress_bar.h"
 #include "app/scene_source.h"
-#include "cpu/cpu_renderer.h"
+#include "app/size_argument.h"
+#include "app/backend.h"
 #include "image/image_io.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
@@ -20,17 +21,6 @@ namespace {
 std::atomic<bool> interrupted{false};
 
 extern "C" void onInterrupt(int) { interrupted = true; }
-
-// "WxH" -> (W, H); throws std::runtime_error with the offending text.
-std::pair<int, int> parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384) {
-        throw std::runtime_error("--size: expected WIDTHxHEIGHT with each from 1 to 16384 (got \"" + text + "\")");
-    }
-    return {w, h};
-}
 
 }  // namespace
 
@@ -43,11 +33,13 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
     render->add_option("--aa", a.aa, "Antialiasing: AA x AA samples per pixel, 1-8 (default: the scene's)")
         ->check(CLI::Range(1, 8));
     render->add_option("--threads", a.threads, "CPU threads (default: all)")->check(CLI::Range(1, 1024));
-    render->add_option("--backend", a.backend, "Renderer: cpu")->check(CLI::IsMember({"cpu"}));
+    render->add_option("--backend", a.backend, "Renderer: cpu (reference) or gl (GLSL, headless through OSMesa)")
+        ->check(CLI::IsMember({"cpu", "gl"}));
     render->add_option("--precision", a.precision, "CPU arithmetic: float (matches GL) or double (reference)")
         ->check(CLI::IsMember({"float", "double"}));
     render->add_option("--heat", a.heat, "Also write a step-count heat image to this file");
-    render->add_flag("--stats", a.stats, "Print render time, steps per pixel and hit ratio");
+    render->add_option("--dump-shader", a.dumpShader, "gl backend: write the generated fragment shader to this file");
+    render->add_flag("--stats", a.stats, "Print render time, steps per pixel and hit ratio (and the GL renderer)");
     return render;
 }
 
@@ -60,23 +52,24 @@ int runRender(const RenderArguments& a) {
         scene::Scene scene = loadSceneArgument(a.scene);
         program::CompileOptions options;
         if (!a.size.empty()) {
-            std::tie(options.width, options.height) = parseSize(a.size);
+            std::tie(options.width, options.height) = parseSizeArgument(a.size);
         }
         options.aa = a.aa;
         program::Program program = program::compileScene(scene, options);
 
-        cpu::RenderControl control;
-        control.threads = a.threads;
-        control.precision = a.precision == "double" ? cpu::Precision::Double : cpu::Precision::Float;
-        control.cancel = &interrupted;
+        BackendRequest request;
+        request.backend = a.backend == "gl" ? Backend::Gl : Backend::Cpu;
+        request.threads = a.threads;
+        request.precision = a.precision == "double" ? cpu::Precision::Double : cpu::Precision::Float;
+        request.cancel = &interrupted;
+        request.dumpShader = a.dumpShader;
         ProgressBar bar("rendering");
-        control.progress = [&](int done, int total) { bar.update(done, total); };
+        request.progress = [&](int done, int total) { bar.update(done, total); };
         std::signal(SIGINT, onInterrupt);
         std::signal(SIGTERM, onInterrupt);
 
-        auto start = std::chrono::steady_clock::now();
-        cpu::RenderOutcome outcome = cpu::renderCpu(program, control);
-        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        BackendResult outcome = renderWithBackend(program, request);
+        double seconds = outcome.seconds;
         if (outcome.cancelled) {
             std::cerr << "sdf-workbench render: cancelled; no image written\n";
             return 130;
@@ -84,7 +77,8 @@ int runRender(const RenderArguments& a) {
 
         std::ostringstream settings;
         settings << program.width << "x" << program.height << " aa " << program.aa << ", max steps "
-                 << program.trace.maxSteps << ", precision " << a.precision;
+                 << program.trace.maxSteps;
+        if (a.backend == "cpu") settings << ", precision " << a.precision;
         image::Metadata metadata = {{"ImageDescription", scene.description},
                                     {"sdfwb:scene", scene.name},
                                     {"sdfwb:backend", a.backend},
@@ -96,8 +90,12 @@ int runRender(const RenderArguments& a) {
         }
         if (a.stats) {
             image::FrameStats stats = image::frameStats(outcome.frame);
-            std::printf("backend %s (%s), %dx%d aa %d\n", a.backend.c_str(), a.precision.c_str(), program.width,
+            std::printf("backend %s (%s), %dx%d aa %d\n", a.backend.c_str(),
+                        a.backend == "gl" ? outcome.glRenderer.c_str() : a.precision.c_str(), program.width,
                         program.height, program.aa);
+            if (a.backend == "gl") {
+                std::printf("shader compile %.3f s (included in time)\n", outcome.compileSeconds);
+            }
             std::printf("time %.3f s, mean steps %.2f, max steps %.0f, hit ratio %.4f\n", seconds, stats.meanSteps,
                         stats.maxSteps, stats.hitRatio);
         }

@@ -16,6 +16,7 @@ struct RenderArguments {
     std::string backend = "cpu";
     std::string precision = "float";
     std::string heat;     // optional step-count heat image
+    std::string dumpShader;  // write the generated fragment shader here (gl backend)
     bool stats = false;
 };
 

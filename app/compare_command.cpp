@@ -1,0 +1,63 @@
+#include "app/compare_command.h"
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "image/image_io.h"
+
+namespace sdfwb::app {
+
+CLI::App* addCompareCommand(CLI::App& app, CompareArguments& a) {
+    CLI::App* compare = app.add_subcommand("compare", "Compare two images on the 8-bit sRGB display encoding");
+    compare->add_option("first", a.first, "First image")->required()->check(CLI::ExistingFile);
+    compare->add_option("second", a.second, "Second image")->required()->check(CLI::ExistingFile);
+    compare->add_option("--diff", a.diff, "Write a heat image of the per-pixel difference");
+    compare->add_option("--fail", a.thresholds.failLevel, "A pixel fails above this many levels of 255")
+        ->capture_default_str();
+    compare->add_option("--fail-percent", a.thresholds.failPercent, "Allowed percentage of failing pixels")
+        ->capture_default_str();
+    compare->add_option("--hard-fail", a.thresholds.hardFailLevel, "No channel may differ by more levels than this")
+        ->capture_default_str();
+    return compare;
+}
+
+std::string describeComparison(const image::Comparison& c) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(4);
+    out << "size: " << c.width << "x" << c.height << "\n"
+        << "max abs error: " << c.maxAbs << "/255 at (" << c.worstX << ", " << c.worstY << ")\n"
+        << "mean abs error: " << c.meanAbs << "/255\n"
+        << "rmse: " << c.rmse << "/255\n"
+        << "psnr: " << c.psnr << " dB\n"
+        << "pixels above 1/255: " << c.percentAbove1 << " %\n"
+        << "pixels above 2/255: " << c.percentAbove2 << " %\n"
+        << "pixels above 8/255: " << c.percentAbove8 << " %\n";
+    if (c.linearMaxAbs) {
+        out << "linear max abs error: " << *c.linearMaxAbs << "\n";
+    }
+    if (c.nonFiniteA + c.nonFiniteB > 0) {
+        out << "non-finite values: " << c.nonFiniteA << " and " << c.nonFiniteB << "\n";
+    }
+    return out.str();
+}
+
+int runCompare(const CompareArguments& a) {
+    try {
+        image::Image first = image::readImage(a.first), second = image::readImage(a.second);
+        bool linear = !image::isDisplayEncoded(a.first) && !image::isDisplayEncoded(a.second);
+        image::Comparison c = image::compareImages(first, second, linear);
+        if (!a.diff.empty()) {
+            image::writeImage(a.diff, image::differenceHeatImage(first, second, a.thresholds.hardFailLevel));
+        }
+        bool ok = image::passes(c, a.thresholds);
+        std::cout << describeComparison(c) << (ok ? "result: pass" : "result: FAIL") << "\n";
+        return ok ? 0 : 1;
+    } catch (const std::exception& error) {
+        std::cerr << "sdf-workbench compare: " << error.what() << "\n";
+        return 2;
+    }
+}
+
+}  // namespace sdfwb::app

@@ -1,0 +1,83 @@
+#include "app/parity_command.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+#include "app/size_argument.h"
+#include "glcontext/osmesa_context.h"
+#include "io/atomic_file.h"
+#include "parity/parity.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb::app {
+namespace {
+
+std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths) {
+    std::vector<std::filesystem::path> files;
+    for (const std::string& path : paths) {
+        if (std::filesystem::is_directory(path)) {
+            for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
+                if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+            }
+        } else {
+            files.emplace_back(path);
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+bool isHardCase(const std::filesystem::path& file) {
+    return file.parent_path().filename() == "hard";
+}
+
+}  // namespace
+
+CLI::App* addParityCommand(CLI::App& app, ParityArguments& a) {
+    CLI::App* parity = app.add_subcommand("parity", "Render scenes with both backends and report how far they differ");
+    parity->add_option("scenes", a.paths, "Scene files or folders (default: scenes)");
+    parity->add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    parity->add_option("--aa", a.aa, "Antialiasing level 1-8")->check(CLI::Range(1, 8))->capture_default_str();
+    parity->add_option("--report", a.report, "Also write the table as Markdown to this file");
+    return parity;
+}
+
+int runParity(const ParityArguments& a) {
+    try {
+        auto [width, height] = parseSizeArgument(a.size);
+        std::vector<std::string> paths = a.paths.empty() ? std::vector<std::string>{"scenes"} : a.paths;
+        auto files = sceneFiles(paths);
+        if (files.empty()) {
+            throw std::runtime_error("no scene files found in " + paths.front());
+        }
+        auto context = glcontext::OsMesaContext::create();
+        gl::GlRenderer renderer(context->gl());
+        bool anyHard = std::any_of(files.begin(), files.end(), isHardCase);
+        std::string table = parity::tableHeader(anyHard);
+        std::cout << "GL renderer: " << context->info().renderer << "\n" << table << std::flush;
+        bool allPass = true;
+        for (const auto& file : files) {
+            scene::Scene scene = scene::loadSceneFile(file);
+            parity::ParityOptions options{.width = width, .height = height, .aa = a.aa, .reference = isHardCase(file)};
+            parity::ParityResult result = parity::measureParity(scene, renderer, options);
+            std::string name = std::filesystem::relative(file).string();
+            std::string row = parity::tableRow(name, result, anyHard);
+            std::cout << row << std::flush;
+            table += row;
+            allPass = allPass && (options.reference ? result.passesHardGate : result.passes);
+        }
+        if (!a.report.empty()) {
+            io::writeTextAtomically(a.report, "GL renderer: " + context->info().renderer + "\n\n" + table);
+        }
+        return allPass ? 0 : 1;
+    } catch (const scene::SceneError& error) {
+        for (const std::string& problem : error.problems()) std::cerr << "sdf-workbench parity: " << problem << "\n";
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "sdf-workbench parity: " << error.what() << "\n";
+        return 2;
+    }
+}
+
+}  // namespace sdfwb::app

@@ -1,0 +1,166 @@
+#include "gl/shader_generator.h"
+
+#include <sstream>
+
+#include "sdf/glsl_sources.h"
+#include "sdf/shared.h"
+
+namespace sdfwb::gl {
+
+using program::Instruction;
+using program::OpClass;
+using program::opcodeInfo;
+
+namespace {
+
+// Uniforms and helpers between the shared library and map(); names match gl_renderer.cpp.
+constexpr std::string_view kInterface = R"(
+uniform samplerBuffer uParams;
+uniform vec3 uCameraOrigin;
+uniform vec3 uCameraForward;
+uniform vec3 uCameraRight;
+uniform vec3 uCameraUp;
+uniform float uTanHalfFov;
+uniform vec2 uResolution;
+uniform ivec2 uSubsample;
+uniform int uAA;
+uniform int uMaxSteps;
+uniform float uMaxDistance;
+uniform float uEpsilon;
+uniform float uEpsilonPerDistance;
+uniform int uShadowMode;
+uniform int uShadowSteps;
+uniform int uAoSamples;
+uniform float uAoDistance;
+uniform int uLightingModel;
+uniform int uLightCount;
+uniform vec3 uAmbientLight;
+uniform vec3 uBackground;
+uniform vec3 uLightDirection[8];
+uniform vec3 uLightColor[8];
+uniform float uLightSoftness[8];
+
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outStats;
+
+vec4 P(int slot) { return texelFetch(uParams, slot); }
+Material M(int slot) { return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3)); }
+
+Light lightAt(int i) {
+    int index = clamp(i, 0, 7);
+    return Light(uLightDirection[index], uLightColor[index], uLightSoftness[index]);
+}
+)";
+
+constexpr std::string_view kMain = R"(
+void main() {
+    Camera camera = Camera(uCameraOrigin, uCameraForward, uCameraRight, uCameraUp, uTanHalfFov);
+    TraceSettings settings = TraceSettings(uMaxSteps, uMaxDistance, uEpsilon, uEpsilonPerDistance,
+        uShadowMode, uShadowSteps, uAoSamples, uAoDistance, uLightingModel, uLightCount,
+        uAmbientLight, uBackground);
+    real px = gl_FragCoord.x + subsampleOffset(uSubsample.x, uAA);
+    real py = gl_FragCoord.y + subsampleOffset(uSubsample.y, uAA);
+    Ray ray = cameraRay(camera, px, py, uResolution.x, uResolution.y);
+    TraceState s = traceBegin(ray);
+    Sample field = Sample(real(0), s.material);
+    int limit = traceIterationBound(settings);
+    for (int i = 0; i < limit; ++i) {
+        if (s.phase == PHASE_DONE) {
+            break;
+        }
+        Light light = lightAt(lightIndex(s));
+        if (traceNeedsSample(s)) {
+            field = map(tracePoint(s, light, settings));
+        }
+        s = traceAdvance(s, field, light, settings);
+    }
+    outColor = vec4(s.color, 1.0);
+    outStats = vec4(float(s.steps), s.hit ? 1.0 : 0.0, 0.0, 1.0);
+}
+)";
+
+std::string slots(const Instruction& in) {
+    std::string args;
+    for (int i = 0; i < opcodeInfo(in.op).paramSlots; ++i) {
+        args += ", P(" + std::to_string(in.param + i) + ")";
+    }
+    return args;
+}
+
+std::string point(int r) { return "p" + std::to_string(r); }
+std::string sample(int r) { return "s" + std::to_string(r); }
+
+void emitInstruction(std::ostringstream& out, const Instruction& in) {
+    const program::OpcodeInfo& info = opcodeInfo(in.op);
+    std::string fn(info.function);
+    switch (info.opClass) {
+    case OpClass::Point:
+        out << "    " << point(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ");\n";
+        break;
+    case OpClass::Shape:
+        if (in.op == program::Opcode::Ground) {
+            out << "    " << sample(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ", M("
+                << in.material << "));\n";
+        } else {
+            out << "    " << sample(in.dst) << " = Sample(" << fn << "(" << point(in.a) << slots(in) << "), M("
+                << in.material << "));\n";
+        }
+        break;
+    case OpClass::Combine:
+        out << "    " << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << sample(in.b) << slots(in);
+        if (info.paramSlots > 0) {
+            out << ", " << in.variant;
+        }
+        out << ");\n";
+        break;
+    case OpClass::Post:
+        out << "    " << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << slots(in)
+            << ");\n";
+        break;
+    case OpClass::Constant:
+        out << "    " << sample(in.dst) << " = " << fn << "(M(0));\n";
+        break;
+    }
+}
+
+}  // namespace
+
+std::string_view vertexShaderSource() {
+    return R"(#version 330 core
+void main() {
+    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+}
+
+std::string generateFragmentShader(const program::Program& program) {
+    std::ostringstream out;
+    out << "#version 330 core\n" << sdf::glslPrelude() << sdf::glslLibrary() << kInterface;
+    out << "\nSample map(vec3 p) {\n";
+    out << "    vec3 p0 = p;\n";
+    for (int r = 1; r < program.pointRegisters; ++r) {
+        out << "    vec3 " << point(r) << ";\n";
+    }
+    for (int r = 0; r < program.sampleRegisters; ++r) {
+        out << "    Sample " << sample(r) << ";\n";
+    }
+    for (const Instruction& in : program.code) {
+        emitInstruction(out, in);
+    }
+    out << "    return " << sample(program.result) << ";\n}\n";
+    out << kMain;
+    return out.str();
+}
+
+int worstCaseBackEdges(const program::Program& program) {
+    const program::TraceParams& t = program.trace;
+    sdf::f32::TraceSettings settings{};
+    settings.maxSteps = t.maxSteps;
+    settings.aoSamples = t.aoSamples;
+    settings.shadowSteps = t.shadowSteps;
+    settings.lightCount = static_cast<int>(program.lights.size());
+    return sdf::f32::traceIterationBound(settings);
+}
+
+}  // namespace sdfwb::gl

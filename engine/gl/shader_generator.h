@@ -1,0 +1,27 @@
+#pragma once
+// Generates the fragment shader for a compiled scene: the shared SDF library,
+// a straight-line map() with exactly the scene's instructions (parameters read
+// from a buffer texture, so edits change data, not text), and one loop that
+// drives the shared tracer with a single call site of map().
+
+#include <string>
+
+#include "program/program.h"
+
+namespace sdfwb::gl {
+
+// The GLSL 3.30 vertex shader drawing one full-screen triangle.
+std::string_view vertexShaderSource();
+
+// The fragment shader for `program`; depends only on its structure
+// (program.structureKey()), never on parameter values.
+std::string generateFragmentShader(const program::Program& program);
+
+// llvmpipe stops any fragment invocation after 65535 loop back-edges and then
+// continues silently with wrong values (docs/toolchain-notes.md). One pass runs
+// at most traceIterationBound() iterations of the driver loop and map() has no
+// loops, so this is the pass's worst case; it must stay below the limit.
+inline constexpr int kLoopLimiter = 65535;
+int worstCaseBackEdges(const program::Program& program);
+
+}  // namespace sdfwb::gl

@@ -1,0 +1,90 @@
+#include "parity/parity.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "cpu/cpu_renderer.h"
+#include "program/compile_scene.h"
+
+namespace sdfwb::parity {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer, const ParityOptions& options) {
+    program::CompileOptions compileOptions{options.width, options.height, options.aa};
+    program::Program program = program::compileScene(scene, compileOptions);
+    ParityResult result;
+
+    auto start = std::chrono::steady_clock::now();
+    cpu::RenderOutcome cpuFrame = cpu::renderCpu(program);
+    result.cpuSeconds = secondsSince(start);
+
+    glRenderer.prepare(program);  // shader build is not part of the render time
+    start = std::chrono::steady_clock::now();
+    gl::GlRenderOutcome glFrame = glRenderer.render(program);
+    result.glSeconds = secondsSince(start);
+
+    image::FrameStats cpuStats = image::frameStats(cpuFrame.frame), glStats = image::frameStats(glFrame.frame);
+    result.cpuHitRatio = cpuStats.hitRatio;
+    result.glHitRatio = glStats.hitRatio;
+    result.cpuNonFinite = cpuStats.nonFinite;
+    result.glNonFinite = glStats.nonFinite;
+    result.glVsCpu = image::compareImages(glFrame.frame.color, cpuFrame.frame.color);
+    result.passes = image::passes(result.glVsCpu, image::kParityThresholds);
+
+    if (options.reference) {
+        scene::Scene tight = scene;
+        tight.render.epsilon /= options.referenceEpsilonDivisor;
+        program::Program referenceProgram = program::compileScene(tight, compileOptions);
+        cpu::RenderOutcome reference = cpu::renderCpu(referenceProgram, {.precision = cpu::Precision::Double});
+        result.hasReference = true;
+        result.referenceHitRatio = image::frameStats(reference.frame).hitRatio;
+        result.cpuVsReference = image::compareImages(cpuFrame.frame.color, reference.frame.color);
+        result.glVsReference = image::compareImages(glFrame.frame.color, reference.frame.color);
+        result.passesHardGate = hardGate(result);
+    }
+    return result;
+}
+
+bool hardGate(const ParityResult& r) {
+    if (r.cpuNonFinite > 0 || r.glNonFinite > 0) return false;
+    if (std::abs(r.cpuHitRatio - r.referenceHitRatio) > 0.005) return false;
+    if (std::abs(r.glHitRatio - r.referenceHitRatio) > 0.005) return false;
+    return r.glVsReference.meanAbs <= 1.25 * r.cpuVsReference.meanAbs + 1.0;
+}
+
+std::string tableHeader(bool withReference) {
+    std::string header =
+        "| scene | max err | mean err | % > 1/255 | % > 8/255 | CPU s | GL s | GL/CPU | parity |";
+    std::string rule = "|---|---|---|---|---|---|---|---|---|";
+    if (withReference) {
+        header += " CPU vs ref (mean) | GL vs ref (mean) | hit ref / cpu / gl | hard gate |";
+        rule += "---|---|---|---|";
+    }
+    return header + "\n" + rule + "\n";
+}
+
+std::string tableRow(const std::string& name, const ParityResult& r, bool withReference) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "| %s | %.0f | %.4f | %.3f | %.3f | %.3f | %.3f | %.2f | %s |", name.c_str(),
+                  r.glVsCpu.maxAbs, r.glVsCpu.meanAbs, r.glVsCpu.percentAbove1, r.glVsCpu.percentAbove8, r.cpuSeconds,
+                  r.glSeconds, r.cpuSeconds > 0 ? r.glSeconds / r.cpuSeconds : 0.0, r.passes ? "pass" : "FAIL");
+    std::string row = buffer;
+    if (withReference && r.hasReference) {
+        std::snprintf(buffer, sizeof buffer, " %.4f | %.4f | %.4f / %.4f / %.4f | %s |", r.cpuVsReference.meanAbs,
+                      r.glVsReference.meanAbs, r.referenceHitRatio, r.cpuHitRatio, r.glHitRatio,
+                      r.passesHardGate ? "pass" : "FAIL");
+        row += buffer;
+    } else if (withReference) {
+        row += " | | | |";
+    }
+    return row + "\n";
+}
+
+}  // namespace sdfwb::parity

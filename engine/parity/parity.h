@@ -1,0 +1,55 @@
+#pragma once
+// CPU/GPU parity of one scene: both backends render it at the same settings and
+// the images are compared on the display encoding. Hard cases (scenes/hard/)
+// are also measured against a double-precision CPU reference with a tight
+// epsilon. The parity command and the parity tests share this code.
+
+#include <string>
+
+#include "gl/gl_renderer.h"
+#include "image/compare.h"
+#include "scene/scene.h"
+
+namespace sdfwb::parity {
+
+struct ParityOptions {
+    int width = 320;
+    int height = 180;
+    int aa = 2;
+    bool reference = false;  // also render the double-precision reference (hard cases)
+    // The reference's hit epsilon is the scene's divided by this.
+    double referenceEpsilonDivisor = 10.0;
+};
+
+struct ParityResult {
+    image::Comparison glVsCpu;
+    double cpuSeconds = 0;
+    double glSeconds = 0;
+    double cpuHitRatio = 0;
+    double glHitRatio = 0;
+    size_t cpuNonFinite = 0;
+    size_t glNonFinite = 0;
+    bool passes = false;  // the parity thresholds of image/compare.h
+
+    // With ParityOptions::reference:
+    bool hasReference = false;
+    image::Comparison cpuVsReference;
+    image::Comparison glVsReference;
+    double referenceHitRatio = 0;
+    bool passesHardGate = false;  // see hardGate()
+};
+
+// Renders `scene` with the CPU (float) backend and with `glRenderer` (its
+// context current), and compares. Throws what the backends throw.
+ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer, const ParityOptions& options);
+
+// The hard-case gate: no NaN; each backend's hit ratio within 0.5 % (absolute,
+// of pixels) of the reference's; GL mean error against the reference at most
+// 1.25 x the CPU float backend's plus 1/255.
+bool hardGate(const ParityResult& result);
+
+// Markdown table header and one row per scene.
+std::string tableHeader(bool withReference);
+std::string tableRow(const std::string& sceneName, const ParityResult& result, bool withReference);
+
+}  // namespace sdfwb::parity
