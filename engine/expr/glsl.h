@@ -1,8 +1,15 @@
 #pragma once
 // GLSL generation from a tape: GLSL 3.30 core built-ins only, one statement
 // per instruction in the tape's order, so the shader rounds exactly the
-// operations the CPU evaluator rounds (bit-identical wherever the GPU's
-// built-ins are exact: + - * / sqrt floor min max abs, and llvmpipe's).
+// operations the CPU evaluator rounds: bit-identical on llvmpipe for
+// + - * / sqrt abs floor min max and selects (sin, cos, exp, log, pow and tan
+// are llvmpipe approximations, within about 1e-6 relative).
+//
+// Bit-exactness needs one thing from the caller: declare the fragment output
+// that depends on these functions `invariant` (`invariant evalResult;`, plain
+// GLSL 3.30). Mesa then treats every operation feeding it as exact; without
+// it, its inexact-math rules rewrite x*y + x*x as x*(y + x) and results
+// differ by an ulp (measured on llvmpipe, Mesa 22.3).
 
 #include <string>
 #include <vector>
