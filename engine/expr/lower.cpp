@@ -31,20 +31,20 @@ std::string_view operatorName(char op) {
 Lowerer::Lowerer(Graph& graph, FreeNameResolver resolveFreeName)
     : graph_(graph), resolveFreeName_(std::move(resolveFreeName)) {}
 
-void Lowerer::bind(const std::string& name, Value value, SourceLocation where) {
+void Lowerer::checkBindable(const std::string& name, SourceLocation where) const {
   if (const std::string problem = identifierProblem(name); !problem.empty()) throw Error(where, problem);
   if (isBound(name)) throw Error(where, "'" + name + "' is already defined");
+}
+
+void Lowerer::bind(const std::string& name, Value value, SourceLocation where) {
+  checkBindable(name, where);
   scope_.emplace(name, value);
 }
 
 void Lowerer::let(const Statement& statement) {
-  // Check the name first: an error in the name is the one the user sees.
-  if (const std::string problem = identifierProblem(statement.name); !problem.empty()) {
-    throw Error(statement.nameWhere, problem);
-  }
-  if (isBound(statement.name)) throw Error(statement.nameWhere, "'" + statement.name + "' is already defined");
-  const Value value = lower(*statement.value);
-  bind(statement.name, value, statement.nameWhere);
+  // The name is checked first: an error in it is the one the user should see.
+  checkBindable(statement.name, statement.nameWhere);
+  scope_.emplace(statement.name, lower(*statement.value));
 }
 
 Value Lowerer::lower(const Expr& expr) {

@@ -29,6 +29,7 @@ class Lowerer {
   void let(const Statement& statement);
 
  private:
+  void checkBindable(const std::string& name, SourceLocation where) const;
   Value lowerName(const Expr& expr);
   Value lowerCall(const Expr& expr);
   Value lowerBinary(const Expr& expr);

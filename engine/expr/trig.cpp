@@ -182,16 +182,18 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
     for (const auto& [v, c] : form.coefficients) {
       const Angle& angle = angles.at(v);
       const mpq_class multiple = c * angle.scale;  // an integer by the choice of scale
-      const long n = multiple.get_num().get_si();
       if (abs(multiple.get_num()) > kMaxAngleMultiple) {
         throw Error(g.origin(id).where, "the multiples of '" + g.variables()[v] +
                                             "' are too far apart for an exact conversion (at most " +
                                             std::to_string(kMaxAngleMultiple) + " times the smallest)");
       }
+      const unsigned long magnitude = mpz_class(abs(multiple.get_num())).get_ui();
       Complex unit = angle.unit;
-      if (n < 0) unit.im = -unit.im;
-      value = multiply(value, power(unit, static_cast<unsigned long>(n < 0 ? -n : n), ring));
-      for (long k = 0; angle.unitScale && k < (n < 0 ? -n : n); ++k) scale = arithmetic.multiply(scale, *angle.unitScale);
+      if (multiple < 0) unit.im = -unit.im;  // e^(-i n psi) is the conjugate of e^(i n psi)
+      value = multiply(value, power(unit, magnitude, ring));
+      if (angle.unitScale) {
+        for (unsigned long k = 0; k < magnitude; ++k) scale = arithmetic.multiply(scale, *angle.unitScale);
+      }
     }
     const Fraction cosine = arithmetic.multiply(arithmetic.polynomial(value.re), scale);
     const Fraction sine = arithmetic.multiply(arithmetic.polynomial(value.im), scale);
