@@ -306,7 +306,7 @@ void readRender(Reader& reader, const json& value, const std::string& path, Rend
     object.member("height", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 16384, render.height); });
     object.member("aa", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 8, render.aa); });
     object.member("max_steps", [&](const json& v, const std::string& p) {
-        reader.integer(v, p, 1, 10000, render.maxSteps);
+        reader.integer(v, p, 1, 8192, render.maxSteps);
     });
     object.member("max_distance", [&](const json& v, const std::string& p) {
         reader.numberAtLeast(v, p, 0, true, render.maxDistance);
@@ -319,7 +319,7 @@ void readRender(Reader& reader, const json& value, const std::string& path, Rend
     });
     object.member("shadows", [&](const json& v, const std::string& p) { reader.choice(v, p, kShadowModes, render.shadows); });
     object.member("shadow_steps", [&](const json& v, const std::string& p) {
-        reader.integer(v, p, 1, 10000, render.shadowSteps);
+        reader.integer(v, p, 1, 4096, render.shadowSteps);
     });
     object.member("ao_samples", [&](const json& v, const std::string& p) { reader.integer(v, p, 0, 64, render.aoSamples); });
     object.member("ao_distance", [&](const json& v, const std::string& p) {

@@ -1,0 +1,71 @@
+// CPU/GPU parity on every shipped scene, with the thresholds of
+// image/compare.h (kParityThresholds), and the hard-case gate against the
+// double-precision reference for scenes/hard/. Prints the parity table.
+
+#include <filesystem>
+#include <iostream>
+
+#include <gtest/gtest.h>
+
+#include "gl_test_support.h"
+#include "parity/parity.h"
+#include "scene/scene_json.h"
+#include "support/scene_files.h"
+
+namespace sdfwb {
+namespace {
+
+bool isHard(const std::filesystem::path& file) { return file.parent_path().filename() == "hard"; }
+
+class Parity : public test::GlTest, public ::testing::WithParamInterface<std::filesystem::path> {};
+
+TEST_P(Parity, BackendsAgree) {
+    const std::filesystem::path& file = GetParam();
+    scene::Scene s = scene::loadSceneFile(file);
+    gl::GlRenderer renderer(gl());
+    parity::ParityOptions options{.width = 320, .height = 180, .aa = 2, .reference = isHard(file)};
+    parity::ParityResult r = parity::measureParity(s, renderer, options);
+    std::cout << parity::tableHeader(options.reference)
+              << parity::tableRow(std::filesystem::relative(file, SDFWB_SOURCE_DIR).string(), r, options.reference);
+    EXPECT_EQ(r.cpuNonFinite, 0u);
+    EXPECT_EQ(r.glNonFinite, 0u);
+    if (options.reference) {
+        EXPECT_TRUE(r.passesHardGate) << "hard-case gate failed";
+    } else {
+        const image::ParityThresholds& t = image::kParityThresholds;
+        EXPECT_LE(r.glVsCpu.percentAbove(t.failLevel), t.failPercent);
+        EXPECT_LE(r.glVsCpu.maxAbs, t.hardFailLevel);
+        EXPECT_LT(r.glVsCpu.meanAbs, t.maxMeanLevel);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Parity, ::testing::ValuesIn(test::allSceneFiles()),
+                         [](const ::testing::TestParamInfo<std::filesystem::path>& info) {
+                             std::string name = std::filesystem::relative(info.param, SDFWB_SOURCE_DIR "/scenes").string();
+                             for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+// A scene of 1000 nodes (500 translated spheres in a union) through both backends.
+class LargeScene : public test::GlTest {};
+
+TEST_F(LargeScene, ThousandNodeSceneHasParity) {
+    scene::Scene s;
+    s.camera = {.target = {0, 0, 0}, .azimuth = 20, .elevation = 30, .distance = 14, .fov = 45};
+    for (int i = 0; i < 500; ++i) {
+        scene::Node translate = scene::Node::make(scene::NodeKind::Translate);
+        translate.set("offset", glm::dvec3((i % 10) - 4.5, ((i / 10) % 5) - 2.0, (i / 50) - 4.5));
+        scene::Node sphere = scene::Node::make(scene::NodeKind::Sphere);
+        sphere.set("radius", 0.2 + 0.002 * i);
+        translate.children.push_back(sphere);
+        s.root.children.push_back(translate);
+    }
+    gl::GlRenderer renderer(gl());
+    parity::ParityResult r = parity::measureParity(s, renderer, {.width = 96, .height = 54, .aa = 1});
+    std::cout << parity::tableHeader(false) << parity::tableRow("1000 nodes (generated)", r, false);
+    EXPECT_TRUE(r.passes);
+    EXPECT_GT(r.glHitRatio, 0.2);
+}
+
+}  // namespace
+}  // namespace sdfwb
