@@ -1,0 +1,80 @@
+// Rendering benchmarks: CPU thread scaling on the default scene, GL shader
+// compile time against scene size (cold Mesa cache), GL against CPU time.
+// Run: build/tests/bench/render_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
+
+#include <cstdlib>
+
+#include <benchmark/benchmark.h>
+
+#include "cpu/cpu_renderer.h"
+#include "gl/gl_renderer.h"
+#include "glcontext/osmesa_context.h"
+#include "program/compile_scene.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb {
+namespace {
+
+scene::Scene defaultScene() { return scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json"); }
+
+// A union of `count` translated spheres: about 3 * count instructions.
+scene::Scene sphereCloud(int count) {
+    scene::Scene s;
+    for (int i = 0; i < count; ++i) {
+        scene::Node translate = scene::Node::make(scene::NodeKind::Translate);
+        translate.set("offset", glm::dvec3(i % 10, (i / 10) % 10, i / 100));
+        scene::Node sphere = scene::Node::make(scene::NodeKind::Sphere);
+        sphere.set("radius", 0.3);
+        translate.children.push_back(sphere);
+        s.root.children.push_back(translate);
+    }
+    return s;
+}
+
+void BM_CpuDefault1280x720(benchmark::State& state) {
+    program::Program p = program::compileScene(defaultScene(), {.width = 1280, .height = 720, .aa = 2});
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(cpu::renderCpu(p, {.threads = static_cast<int>(state.range(0))}));
+    }
+}
+BENCHMARK(BM_CpuDefault1280x720)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+glcontext::OsMesaContext& context() {
+    static auto c = glcontext::OsMesaContext::create();
+    return *c;
+}
+
+// Cold compile: a fresh renderer per iteration and Mesa's disk cache off; the
+// structure differs per iteration (one extra node) so no cache can help.
+void BM_GlCompile(benchmark::State& state) {
+    int nodes = static_cast<int>(state.range(0));
+    int variant = 0;
+    for (auto _ : state) {
+        program::Program p = program::compileScene(sphereCloud(nodes / 2 + (variant++ % 2)));
+        gl::GlRenderer renderer(context().gl());
+        renderer.prepare(p);
+        state.SetIterationTime(renderer.counters().lastCompileSeconds);
+    }
+}
+BENCHMARK(BM_GlCompile)->Arg(10)->Arg(100)->Arg(1000)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(2);
+
+void BM_GlDefault1280x720(benchmark::State& state) {
+    program::Program p = program::compileScene(defaultScene(), {.width = 1280, .height = 720, .aa = 2});
+    gl::GlRenderer renderer(context().gl());
+    renderer.prepare(p);
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(renderer.render(p));
+    }
+}
+BENCHMARK(BM_GlDefault1280x720)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+}  // namespace sdfwb
+
+int main(int argc, char** argv) {
+    setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
