@@ -12,6 +12,7 @@
 #include "app/size_argument.h"
 #include "app/backend.h"
 #include "image/image_io.h"
+#include "io/atomic_file.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
 
@@ -45,9 +46,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
 
 int runRender(const RenderArguments& a) {
     try {
-        image::checkWritableFormat(a.output);
-        if (!a.heat.empty()) {
-            image::checkWritableFormat(a.heat);
+        for (const std::string& output : {a.output, a.heat}) {
+            if (!output.empty()) {
+                image::checkWritableFormat(output);
+                io::checkCanCreate(output);
+            }
         }
         scene::Scene scene = loadSceneArgument(a.scene);
         program::CompileOptions options;

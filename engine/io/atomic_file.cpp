@@ -20,8 +20,24 @@ std::filesystem::path temporarySibling(const std::filesystem::path& destination)
     return result;
 }
 
+void checkCanCreate(const std::filesystem::path& destination) {
+    std::filesystem::path folder = destination.parent_path();
+    if (folder.empty()) {
+        folder = ".";
+    }
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) {
+        throw std::runtime_error("cannot write " + destination.string() + ": folder " + folder.string() +
+                                 " does not exist");
+    }
+    if (::access(folder.c_str(), W_OK) != 0) {
+        throw std::runtime_error("cannot write " + destination.string() + ": " + std::strerror(errno));
+    }
+}
+
 void writeAtomically(const std::filesystem::path& destination,
                      const std::function<void(const std::filesystem::path&)>& write) {
+    checkCanCreate(destination);
     std::filesystem::path temporary = temporarySibling(destination);
     try {
         write(temporary);

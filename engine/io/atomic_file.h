@@ -22,6 +22,10 @@ void writeAtomically(const std::filesystem::path& destination,
 // Writes `content` atomically; throws std::runtime_error naming the path on failure.
 void writeTextAtomically(const std::filesystem::path& destination, std::string_view content);
 
+// Throws std::runtime_error "cannot write <path>: <reason>" when the file's
+// folder does not exist or is not writable, so a long job can fail before it starts.
+void checkCanCreate(const std::filesystem::path& destination);
+
 // Throws std::runtime_error "cannot read <path>: <reason>".
 std::string readTextFile(const std::filesystem::path& path);
 

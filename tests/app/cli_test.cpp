@@ -1,0 +1,135 @@
+// Runs the sdf-workbench executable: snapshots, error messages and exit codes,
+// no partial files, compare's verdicts.
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ProcessResult {
+    int exitCode;
+    std::string output;  // stdout and stderr together
+};
+
+ProcessResult run(const std::string& arguments) {
+    std::string command = std::string(SDFWB_EXECUTABLE) + " " + arguments + " 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    std::string output;
+    std::array<char, 4096> buffer{};
+    size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0) output.append(buffer.data(), n);
+    int status = pclose(pipe.release());
+    return {WEXITSTATUS(status), output};
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder_ = fs::temp_directory_path() / ("sdfwb_cli_" + std::to_string(::getpid()) + "_" +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(folder_);
+        setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+    fs::path path(const std::string& name) const { return folder_ / name; }
+    size_t filesInFolder() const { return static_cast<size_t>(std::distance(fs::directory_iterator(folder_), {})); }
+
+    fs::path folder_;
+};
+
+TEST_F(Cli, RenderWritesTheImageWithMetadataAndPrintsItsPath) {
+    fs::path out = path("snapshot.png");
+    ProcessResult r = run("render " SDFWB_SOURCE_DIR "/scenes/default.json -o " + out.string() + " --size 64x36 --stats");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(out.string()), std::string::npos);
+    EXPECT_NE(r.output.find("hit ratio"), std::string::npos);
+    auto in = OIIO::ImageInput::open(out.string());
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().width, 64);
+    EXPECT_EQ(in->spec().get_string_attribute("sdfwb:scene"), "default");
+    EXPECT_EQ(in->spec().get_string_attribute("sdfwb:backend"), "cpu");
+    EXPECT_FALSE(in->spec().get_string_attribute("sdfwb:renderSeconds").empty());
+    EXPECT_EQ(filesInFolder(), 1u);
+}
+
+TEST_F(Cli, RenderWithoutASceneUsesTheBuiltInDefaultFromAnyFolder) {
+    fs::path out = path("builtin.exr");
+    ProcessResult r = run("render -o " + out.string() + " --size 32x18 --aa 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(out));
+}
+
+TEST_F(Cli, GlBackendRendersHeadlessAndDumpsItsShader) {
+    fs::path out = path("gl.png"), shader = path("scene.frag");
+    ProcessResult r = run("render " SDFWB_SOURCE_DIR "/scenes/default.json -o " + out.string() +
+                " --size 48x27 --backend gl --stats --dump-shader " + shader.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out));
+    std::ifstream dumped(shader);
+    std::string text((std::istreambuf_iterator<char>(dumped)), {});
+    EXPECT_NE(text.find("Sample map(vec3 p)"), std::string::npos);
+}
+
+TEST_F(Cli, InvalidSceneGivesOneLinePerProblemAndNoFile) {
+    fs::path scene = path("bad.json"), out = path("out.png");
+    std::ofstream(scene) << R"({"format": "sdf-workbench-scene", "version": 1, "root": {"kind": "sphere", "radius": -1}})";
+    ProcessResult r = run("render " + scene.string() + " -o " + out.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.output, "sdf-workbench render: " + scene.string() + ": root.radius: must be > 0 (got -1)\n");
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, MalformedJsonNamesLineAndColumn) {
+    fs::path scene = path("broken.json");
+    std::ofstream(scene) << "{\n  \"format\": \"sdf-workbench-scene\"\n  \"version\": 1\n}";
+    ProcessResult r = run("render " + scene.string() + " -o " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find(scene.string() + ": line 3, column 11: invalid JSON: syntax error while parsing object - unexpected string literal; expected '}'"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, BadOutputsFailBeforeRenderingAndLeaveNothing) {
+    ProcessResult format = run("render -o " + path("x.bmp").string() + " --size 8x8");
+    EXPECT_NE(format.exitCode, 0);
+    EXPECT_NE(format.output.find("unknown image format '.bmp'"), std::string::npos) << format.output;
+    ProcessResult folder = run("render -o " + path("missing/x.png").string() + " --size 8x8");
+    EXPECT_NE(folder.exitCode, 0);
+    EXPECT_NE(folder.output.find("does not exist"), std::string::npos) << folder.output;
+    ProcessResult missing = run("render " + path("nothing.json").string() + " -o " + path("y.png").string());
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.output.find("cannot read"), std::string::npos) << missing.output;
+    EXPECT_EQ(filesInFolder(), 0u);
+}
+
+TEST_F(Cli, CompareSaysWhetherTheThresholdsHold) {
+    fs::path a = path("a.png"), b = path("b.png"), c = path("c.png"), diff = path("diff.png");
+    ASSERT_EQ(run("render -o " + a.string() + " --size 40x24 --aa 1").exitCode, 0);
+    ASSERT_EQ(run("render -o " + b.string() + " --size 40x24 --aa 1 --backend gl").exitCode, 0);
+    ASSERT_EQ(run("render -o " + c.string() + " --size 40x24 --aa 2").exitCode, 0);
+    ProcessResult same = run("compare " + a.string() + " " + b.string() + " --diff " + diff.string());
+    EXPECT_EQ(same.exitCode, 0) << same.output;
+    EXPECT_NE(same.output.find("result: pass"), std::string::npos);
+    EXPECT_TRUE(fs::exists(diff));
+    ProcessResult different = run("compare " + a.string() + " " + c.string());
+    EXPECT_EQ(different.exitCode, 1) << different.output;
+    EXPECT_NE(different.output.find("max abs error"), std::string::npos);
+}
+
+TEST_F(Cli, HelpDescribesEveryRenderOption) {
+    ProcessResult r = run("render --help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* option : {"--output", "--size", "--aa", "--threads", "--backend", "--stats", "--precision",
+                               "--heat", "--dump-shader"}) {
+        EXPECT_NE(r.output.find(option), std::string::npos) << option;
+    }
+}
+
+}  // namespace
