@@ -1,0 +1,158 @@
+// The script interpreter against a fake host: parsing errors name the line,
+// commands edit through the Editor (so undo works), waits and quit rules.
+
+#include <gtest/gtest.h>
+
+#include "scene/scene_json.h"
+#include "ui/script.h"
+
+namespace sdfwb::ui {
+namespace {
+
+struct FakeHost : ScriptHost {
+    bool busy = false;
+    bool quitCalled = false;
+    std::vector<std::string> screenshots;
+    std::vector<std::string> saved;
+    Editor* editor = nullptr;
+
+    bool idle() const override { return !busy; }
+    std::string requestScreenshot(const std::filesystem::path& path) override {
+        screenshots.push_back(path.string());
+        return "";
+    }
+    std::string save(const std::filesystem::path& path) override {
+        saved.push_back(path.string());
+        editor->markSaved();
+        return "";
+    }
+    std::string open(const std::filesystem::path&) override { return "cannot open in tests"; }
+    void quit() override { quitCalled = true; }
+};
+
+struct ScriptRun {
+    Editor editor{scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json")};
+    UiState ui;
+    FakeHost host;
+    ScriptStatus status = ScriptStatus::Running;
+    std::string error;
+    int frames = 0;
+
+    explicit ScriptRun(const std::string& text, int maxFrames = 1000) {
+        host.editor = &editor;
+        ScriptRunner runner(parseScript(text, "test.txt"), "test.txt");
+        while (status == ScriptStatus::Running && frames < maxFrames) {
+            status = runner.step(editor, ui, host);
+            ++frames;
+        }
+        error = runner.error();
+    }
+};
+
+TEST(ScriptParseTest, UnknownCommandNamesTheLine) {
+    try {
+        parseScript("# comment\n\nselect root\nfly away\n", "demo.txt");
+        FAIL() << "expected an error";
+    } catch (const std::runtime_error& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("demo.txt:4: unknown command \"fly\"", 0), 0u) << error.what();
+    }
+}
+
+TEST(ScriptParseTest, WrongArgumentCountNamesTheLineAndUsage) {
+    try {
+        parseScript("camera 1 2\n", "demo.txt");
+        FAIL() << "expected an error";
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(),
+                     "demo.txt:1: wrong number of arguments (usage: camera <azimuth> <elevation> <distance>)");
+    }
+}
+
+TEST(ScriptParseTest, SetKeepsTheWholeValue) {
+    auto commands = parseScript("set half_extents 1 2 3\n", "s");
+    ASSERT_EQ(commands.size(), 1u);
+    EXPECT_EQ(commands[0].args, (std::vector<std::string>{"half_extents", "1 2 3"}));
+}
+
+TEST(ScriptRunTest, EditsUndoAndSave) {
+    ScriptRun run("select root.children[0].children[0]\n"
+            "set radius 0.5\n"
+            "set material blue\n"
+            "undo\n"
+            "set render.aa 1\n"
+            "backend cpu\n"
+            "camera 45 30 8\n"
+            "save out.json\n"
+            "quit\n");
+    EXPECT_EQ(run.status, ScriptStatus::Finished) << run.error;
+    const scene::Node* ball = findNode(run.editor.scene().root, {0, 0});
+    EXPECT_EQ(ball->real("radius"), 0.5);
+    EXPECT_EQ(ball->text("material"), "red");
+    EXPECT_EQ(run.editor.scene().render.aa, 1);
+    EXPECT_EQ(run.editor.scene().camera.azimuth, 45);
+    EXPECT_EQ(run.editor.scene().camera.distance, 8);
+    EXPECT_EQ(run.ui.backend, ViewBackend::Cpu);
+    EXPECT_EQ(run.host.saved, std::vector<std::string>{"out.json"});
+    EXPECT_TRUE(run.host.quitCalled);
+    // the camera command is one undo step
+    run.editor.undo();
+    EXPECT_EQ(run.editor.scene().camera.azimuth, 30);
+}
+
+TEST(ScriptRunTest, InvalidValueStopsWithTheLineAndLoaderMessage) {
+    ScriptRun run("select root.children[0].children[0]\nset radius -1\nquit discard\n");
+    EXPECT_EQ(run.status, ScriptStatus::Failed);
+    EXPECT_EQ(run.error, "test.txt:2: set: root.children[0].children[0].radius: must be > 0 (got -1)");
+    EXPECT_FALSE(run.host.quitCalled);
+}
+
+TEST(ScriptRunTest, BadPathAndMissingSelection) {
+    EXPECT_EQ(ScriptRun("select root.children[9]\n").error, "test.txt:1: select: root.children[9]: no such node");
+    EXPECT_EQ(ScriptRun("delete\n").error, "test.txt:1: delete: no node selected");
+    EXPECT_EQ(ScriptRun("add blob\n").error.rfind("test.txt:1: add: unknown node kind \"blob\"", 0), 0u);
+}
+
+TEST(ScriptRunTest, QuitRefusesUnsavedChanges) {
+    ScriptRun run("add sphere\nquit\n");
+    EXPECT_EQ(run.status, ScriptStatus::Failed);
+    EXPECT_EQ(run.error, "test.txt:2: quit: the scene has unsaved changes (save it first, or use quit discard)");
+    ScriptRun discard("add sphere\nquit discard\n");
+    EXPECT_EQ(discard.status, ScriptStatus::Finished);
+    EXPECT_TRUE(discard.host.quitCalled);
+}
+
+TEST(ScriptRunTest, WaitFramesAndScreenshotWaitsForIdle) {
+    ScriptRun frames("wait 5\n");
+    EXPECT_EQ(frames.status, ScriptStatus::Finished);
+    EXPECT_GE(frames.frames, 6);
+
+    FakeHost host;
+    Editor editor;
+    UiState ui;
+    host.editor = &editor;
+    host.busy = true;
+    ScriptRunner runner(parseScript("screenshot a.png\n", "s"), "s");
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(runner.step(editor, ui, host), ScriptStatus::Running);
+    EXPECT_TRUE(host.screenshots.empty());
+    host.busy = false;
+    EXPECT_EQ(runner.step(editor, ui, host), ScriptStatus::Finished);
+    EXPECT_EQ(host.screenshots, std::vector<std::string>{"a.png"});
+}
+
+TEST(ScriptRunTest, WaitIdleTimesOut) {
+    FakeHost host;
+    Editor editor;
+    UiState ui;
+    host.editor = &editor;
+    host.busy = true;
+    ScriptRunner runner(parseScript("wait idle\n", "s"), "s");
+    runner.idleTimeout = std::chrono::seconds(0);
+    runner.step(editor, ui, host);
+    ScriptStatus status = ScriptStatus::Running;
+    for (int i = 0; i < 100 && status == ScriptStatus::Running; ++i) status = runner.step(editor, ui, host);
+    EXPECT_EQ(status, ScriptStatus::Failed);
+    EXPECT_EQ(runner.error().rfind("s:1: wait: still busy after 0 s", 0), 0u) << runner.error();
+}
+
+}  // namespace
+}  // namespace sdfwb::ui

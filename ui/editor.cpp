@@ -1,0 +1,333 @@
+#include "ui/editor.h"
+
+#include <charconv>
+
+#include "scene/scene_json.h"
+
+namespace sdfwb::ui {
+
+using scene::Node;
+using scene::NodeKind;
+using json = nlohmann::ordered_json;
+
+Problems validateScene(const scene::Scene& scene) {
+    try {
+        scene::sceneFromJson(scene::sceneToJson(scene));
+    } catch (const scene::SceneError& error) {
+        return error.problems();
+    }
+    return {};
+}
+
+Editor::Editor(scene::Scene scene) : scene_(std::move(scene)) {}
+
+void Editor::select(std::optional<NodePath> path) {
+    if (path && !findNode(scene_.root, *path)) {
+        path.reset();
+    }
+    selection_ = std::move(path);
+}
+
+const Node* Editor::selectedNode() const { return selection_ ? findNode(scene_.root, *selection_) : nullptr; }
+
+Problems Editor::commit(std::string_view label, scene::Scene candidate, std::optional<NodePath> selection,
+                        std::string_view mergeKey) {
+    Problems problems = validateScene(candidate);
+    if (!problems.empty()) {
+        return problems;
+    }
+    bool merge = mergeOpen_ && !mergeKey.empty() && !undo_.empty() && undo_.back().mergeKey == mergeKey;
+    if (!merge) {
+        undo_.push_back({std::move(scene_), selection_, std::string(label), std::string(mergeKey), stateId_});
+    }
+    redo_.clear();
+    mergeOpen_ = !mergeKey.empty();
+    scene_ = std::move(candidate);
+    stateId_ = nextStateId_++;
+    ++revision_;
+    select(std::move(selection));
+    return {};
+}
+
+Problems Editor::apply(std::string_view label, const std::function<void(scene::Scene&)>& change,
+                       std::string_view mergeKey) {
+    scene::Scene candidate = scene_;
+    change(candidate);
+    return commit(label, std::move(candidate), selection_, mergeKey);
+}
+
+namespace {
+
+Problems noNode(const NodePath& path) { return {formatNodePath(path) + ": no such node"}; }
+
+bool takesAnotherChild(const Node& node) {
+    const scene::KindSpec& spec = scene::kindSpec(node.kind);
+    return spec.maxChildren < 0 || static_cast<int>(node.children.size()) < spec.maxChildren;
+}
+
+}  // namespace
+
+Problems Editor::setField(const NodePath& path, std::string_view field, scene::FieldValue value,
+                          std::string_view mergeKey) {
+    const Node* node = findNode(scene_.root, path);
+    if (!node) {
+        return noNode(path);
+    }
+    const scene::KindSpec& spec = scene::kindSpec(node->kind);
+    if (scene::fieldIndex(spec, field) < 0) {
+        std::string list = "name";
+        for (const scene::FieldSpec& f : spec.fields) {
+            list += ", " + std::string(f.name);
+        }
+        return {formatNodePath(path) + "." + std::string(field) + ": unknown field (" + std::string(spec.name) +
+                " has: " + list + ")"};
+    }
+    scene::Scene candidate = scene_;
+    findNode(candidate.root, path)->set(field, std::move(value));
+    return commit("Set " + std::string(field), std::move(candidate), selection_, mergeKey);
+}
+
+Problems Editor::rename(const NodePath& path, std::string name) {
+    if (!findNode(scene_.root, path)) {
+        return noNode(path);
+    }
+    scene::Scene candidate = scene_;
+    findNode(candidate.root, path)->name = std::move(name);
+    return commit("Rename", std::move(candidate), selection_, {});
+}
+
+Problems Editor::insert(const NodePath& parent, int index, Node node) {
+    const Node* target = findNode(scene_.root, parent);
+    if (!target) {
+        return noNode(parent);
+    }
+    if (!takesAnotherChild(*target)) {
+        return {formatNodePath(parent) + ": a " + std::string(scene::kindSpec(target->kind).name) +
+                " node takes no more children"};
+    }
+    int count = static_cast<int>(target->children.size());
+    if (index < 0 || index > count) {
+        index = count;
+    }
+    std::string label = "Add " + std::string(scene::kindSpec(node.kind).name);
+    scene::Scene candidate = scene_;
+    auto& children = findNode(candidate.root, parent)->children;
+    children.insert(children.begin() + index, std::move(node));
+    NodePath added = parent;
+    added.push_back(index);
+    return commit(label, std::move(candidate), added, {});
+}
+
+Problems Editor::add(NodeKind kind, const std::optional<NodePath>& under) {
+    NodePath target = under.value_or(selection_.value_or(NodePath{}));
+    const Node* node = findNode(scene_.root, target);
+    if (!node) {
+        return noNode(target);
+    }
+    if (scene::kindSpec(kind).minChildren > 0) {
+        // an operator that needs a child cannot stand alone: it wraps the target
+        return wrap(target, kind);
+    }
+    if (takesAnotherChild(*node)) {
+        return insert(target, -1, Node::make(kind));
+    }
+    if (!target.empty() && takesAnotherChild(*findNode(scene_.root, parentOf(target)))) {
+        return insert(parentOf(target), target.back() + 1, Node::make(kind));
+    }
+    return insert({}, -1, Node::make(kind));
+}
+
+Problems Editor::wrap(const NodePath& path, NodeKind kind) {
+    const Node* node = findNode(scene_.root, path);
+    if (!node) {
+        return noNode(path);
+    }
+    if (scene::kindSpec(kind).maxChildren == 0) {
+        return {"cannot wrap in a " + std::string(scene::kindSpec(kind).name) + ": it takes no children"};
+    }
+    scene::Scene candidate = scene_;
+    Node* slot = findNode(candidate.root, path);
+    Node wrapper = Node::make(kind);
+    wrapper.children.push_back(std::move(*slot));
+    *slot = std::move(wrapper);
+    return commit("Wrap in " + std::string(scene::kindSpec(kind).name), std::move(candidate), path, {});
+}
+
+Problems Editor::move(const NodePath& from, const NodePath& newParent, int index) {
+    if (from.empty()) {
+        return {"root: the root node cannot be moved"};
+    }
+    if (!findNode(scene_.root, from)) {
+        return noNode(from);
+    }
+    if (!findNode(scene_.root, newParent)) {
+        return noNode(newParent);
+    }
+    if (isWithin(newParent, from)) {
+        return {formatNodePath(from) + ": cannot move a node into itself"};
+    }
+    NodePath oldParent = parentOf(from);
+    // Where the new parent and index are once the node has left its old place.
+    NodePath target = newParent;
+    if (isWithin(newParent, oldParent) && newParent.size() > oldParent.size() &&
+        newParent[oldParent.size()] > from.back()) {
+        --target[oldParent.size()];
+    }
+    if (newParent == oldParent && index > from.back()) {
+        --index;
+    }
+    scene::Scene candidate = scene_;
+    auto& oldChildren = findNode(candidate.root, oldParent)->children;
+    Node moving = std::move(oldChildren[static_cast<size_t>(from.back())]);
+    oldChildren.erase(oldChildren.begin() + from.back());
+    Node* parent = findNode(candidate.root, target);
+    if (!takesAnotherChild(*parent)) {
+        return {formatNodePath(newParent) + ": a " + std::string(scene::kindSpec(parent->kind).name) +
+                " node takes no more children"};
+    }
+    int count = static_cast<int>(parent->children.size());
+    if (index < 0 || index > count) {
+        index = count;
+    }
+    parent->children.insert(parent->children.begin() + index, std::move(moving));
+    NodePath moved = target;
+    moved.push_back(index);
+    return commit("Move", std::move(candidate), moved, {});
+}
+
+Problems Editor::duplicate(const NodePath& path) {
+    if (path.empty()) {
+        return {"root: the root node cannot be duplicated (wrap it in an operation first)"};
+    }
+    const Node* node = findNode(scene_.root, path);
+    if (!node) {
+        return noNode(path);
+    }
+    return insert(parentOf(path), path.back() + 1, *node);
+}
+
+Problems Editor::remove(const NodePath& path) {
+    if (path.empty()) {
+        return {"root: the root node cannot be deleted"};
+    }
+    if (!findNode(scene_.root, path)) {
+        return noNode(path);
+    }
+    scene::Scene candidate = scene_;
+    auto& children = findNode(candidate.root, parentOf(path))->children;
+    std::string label = "Delete " + std::string(scene::kindSpec(children[static_cast<size_t>(path.back())].kind).name);
+    children.erase(children.begin() + path.back());
+    return commit(label, std::move(candidate), parentOf(path), {});
+}
+
+namespace {
+
+// Splits "lights[0].softness" into keys and indices; false on bad syntax.
+struct JsonStep {
+    std::string key;  // empty for an index step
+    int index = -1;
+};
+
+bool splitJsonPath(std::string_view text, std::vector<JsonStep>& steps) {
+    while (!text.empty()) {
+        if (text.front() == '[') {
+            size_t close = text.find(']');
+            if (close == std::string_view::npos) return false;
+            int index = -1;
+            auto [end, error] = std::from_chars(text.data() + 1, text.data() + close, index);
+            if (error != std::errc() || end != text.data() + close || index < 0) return false;
+            steps.push_back({"", index});
+            text.remove_prefix(close + 1);
+        } else {
+            if (text.front() == '.') {
+                if (steps.empty()) return false;
+                text.remove_prefix(1);
+            }
+            size_t end = text.find_first_of(".[");
+            std::string_view key = text.substr(0, end);
+            if (key.empty()) return false;
+            steps.push_back({std::string(key), -1});
+            text.remove_prefix(key.size());
+        }
+    }
+    return !steps.empty();
+}
+
+}  // namespace
+
+Problems Editor::setJsonValue(std::string_view jsonPath, const json& value, std::string_view mergeKey) {
+    std::vector<JsonStep> steps;
+    if (!splitJsonPath(jsonPath, steps)) {
+        return {std::string(jsonPath) + ": not a JSON path (write e.g. render.aa or lights[0].softness)"};
+    }
+    json document = scene::sceneToJson(scene_);
+    json* at = &document;
+    std::string walked;
+    for (size_t i = 0; i < steps.size(); ++i) {
+        const JsonStep& step = steps[i];
+        bool last = i + 1 == steps.size();
+        if (step.key.empty()) {
+            if (!at->is_array() || static_cast<size_t>(step.index) >= at->size()) {
+                return {walked + "[" + std::to_string(step.index) + "]: no such element" +
+                        (at->is_array() ? " (" + walked + " has " + std::to_string(at->size()) + ")" : "")};
+            }
+            at = &(*at)[static_cast<size_t>(step.index)];
+            walked += "[" + std::to_string(step.index) + "]";
+        } else {
+            walked += (walked.empty() ? "" : ".") + step.key;
+            if (!at->is_object() || (!last && !at->contains(step.key))) {
+                return {walked + ": no such field"};
+            }
+            at = &(*at)[step.key];  // a new key on the last step is reported by the loader
+        }
+    }
+    *at = value;
+    scene::Scene candidate;
+    try {
+        candidate = scene::sceneFromJson(document);
+    } catch (const scene::SceneError& error) {
+        return error.problems();
+    }
+    return commit("Set " + walked, std::move(candidate), selection_, mergeKey);
+}
+
+std::string_view Editor::undoLabel() const { return undo_.empty() ? std::string_view() : undo_.back().label; }
+std::string_view Editor::redoLabel() const { return redo_.empty() ? std::string_view() : redo_.back().label; }
+
+void Editor::restore(Step& from, std::vector<Step>& to) {
+    to.push_back({std::move(scene_), selection_, from.label, {}, stateId_});
+    scene_ = std::move(from.scene);
+    stateId_ = from.stateId;
+    ++revision_;
+    mergeOpen_ = false;
+    select(from.selection);
+}
+
+bool Editor::undo() {
+    if (undo_.empty()) return false;
+    Step step = std::move(undo_.back());
+    undo_.pop_back();
+    restore(step, redo_);
+    return true;
+}
+
+bool Editor::redo() {
+    if (redo_.empty()) return false;
+    Step step = std::move(redo_.back());
+    redo_.pop_back();
+    restore(step, undo_);
+    return true;
+}
+
+void Editor::reset(scene::Scene scene) {
+    scene_ = std::move(scene);
+    selection_.reset();
+    undo_.clear();
+    redo_.clear();
+    mergeOpen_ = false;
+    stateId_ = nextStateId_++;
+    savedStateId_ = stateId_;
+    ++revision_;
+}
+
+}  // namespace sdfwb::ui

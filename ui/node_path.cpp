@@ -1,0 +1,61 @@
+#include "ui/node_path.h"
+
+#include <charconv>
+
+namespace sdfwb::ui {
+
+std::string formatNodePath(const NodePath& path) {
+    std::string text = "root";
+    for (int index : path) {
+        text += ".children[" + std::to_string(index) + "]";
+    }
+    return text;
+}
+
+std::optional<NodePath> parseNodePath(std::string_view text) {
+    constexpr std::string_view kRoot = "root", kStep = ".children[";
+    if (!text.starts_with(kRoot)) {
+        return std::nullopt;
+    }
+    text.remove_prefix(kRoot.size());
+    NodePath path;
+    while (!text.empty()) {
+        if (!text.starts_with(kStep)) {
+            return std::nullopt;
+        }
+        text.remove_prefix(kStep.size());
+        int index = -1;
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), index);
+        if (error != std::errc() || index < 0 || end == text.data() + text.size() || *end != ']') {
+            return std::nullopt;
+        }
+        path.push_back(index);
+        text.remove_prefix(static_cast<size_t>(end - text.data()) + 1);
+    }
+    return path;
+}
+
+namespace {
+template <typename NodeT>
+NodeT* walk(NodeT& root, const NodePath& path) {
+    NodeT* node = &root;
+    for (int index : path) {
+        if (index < 0 || static_cast<size_t>(index) >= node->children.size()) {
+            return nullptr;
+        }
+        node = &node->children[static_cast<size_t>(index)];
+    }
+    return node;
+}
+}  // namespace
+
+const scene::Node* findNode(const scene::Node& root, const NodePath& path) { return walk(root, path); }
+scene::Node* findNode(scene::Node& root, const NodePath& path) { return walk(root, path); }
+
+bool isWithin(const NodePath& inner, const NodePath& outer) {
+    return inner.size() >= outer.size() && std::equal(outer.begin(), outer.end(), inner.begin());
+}
+
+NodePath parentOf(const NodePath& path) { return NodePath(path.begin(), path.end() - 1); }
+
+}  // namespace sdfwb::ui

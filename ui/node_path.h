@@ -1,0 +1,33 @@
+#pragma once
+// Addressing nodes of the scene tree by their JSON path, as the loader's
+// messages and the script language spell them: "root", "root.children[0]",
+// "root.children[1].children[0]".
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace sdfwb::ui {
+
+// Child indices from the root; empty is the root itself.
+using NodePath = std::vector<int>;
+
+std::string formatNodePath(const NodePath& path);
+
+// The path, or nullopt when `text` is not of the form root(.children[N])*.
+std::optional<NodePath> parseNodePath(std::string_view text);
+
+// nullptr when the path leads nowhere in `root`.
+const scene::Node* findNode(const scene::Node& root, const NodePath& path);
+scene::Node* findNode(scene::Node& root, const NodePath& path);
+
+// Whether `inner` is `outer` or lies inside its subtree.
+bool isWithin(const NodePath& inner, const NodePath& outer);
+
+// The parent's path; the root has none (checked by the caller: path non-empty).
+NodePath parentOf(const NodePath& path);
+
+}  // namespace sdfwb::ui

@@ -1,0 +1,305 @@
+#include "ui/script.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "scene/node_kinds.h"
+
+namespace sdfwb::ui {
+namespace {
+
+struct CommandSpec {
+    std::string_view name;
+    int minArgs;
+    int maxArgs;
+    std::string_view usage;
+};
+
+constexpr CommandSpec kCommands[] = {
+    {"select", 1, 1, "select <node path>|none"},
+    {"set", 2, 2, "set <field or JSON path> <value>"},
+    {"add", 1, 3, "add <kind> [under <node path>]"},
+    {"wrap", 1, 1, "wrap <kind>"},
+    {"duplicate", 0, 0, "duplicate"},
+    {"delete", 0, 0, "delete"},
+    {"rename", 1, 1, "rename <name>"},
+    {"move", 2, 2, "move <new parent path> <index>"},
+    {"undo", 0, 0, "undo"},
+    {"redo", 0, 0, "redo"},
+    {"backend", 1, 1, "backend cpu|gl"},
+    {"compare", 1, 1, "compare off|side|diff"},
+    {"heat", 1, 1, "heat on|off"},
+    {"camera", 3, 3, "camera <azimuth> <elevation> <distance>"},
+    {"wait", 1, 1, "wait <frames>|idle"},
+    {"screenshot", 1, 1, "screenshot <file.png>"},
+    {"save", 1, 1, "save <file.json>"},
+    {"open", 1, 1, "open <file.json>"},
+    {"quit", 0, 1, "quit [discard]"},
+};
+
+const CommandSpec* findCommand(std::string_view name) {
+    for (const CommandSpec& spec : kCommands) {
+        if (spec.name == name) return &spec;
+    }
+    return nullptr;
+}
+
+std::vector<std::string> words(std::string_view text) {
+    std::vector<std::string> out;
+    std::istringstream in{std::string(text)};
+    for (std::string word; in >> word;) out.push_back(word);
+    return out;
+}
+
+std::string_view trim(std::string_view s) {
+    size_t begin = s.find_first_not_of(" \t\r");
+    if (begin == std::string_view::npos) return {};
+    size_t end = s.find_last_not_of(" \t\r");
+    return s.substr(begin, end - begin + 1);
+}
+
+bool parseNumber(const std::string& text, double& out) {
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
+    return error == std::errc() && end == text.data() + text.size() && std::isfinite(out);
+}
+
+// A value as JSON: JSON text as it is ("[1, 2, 3]", "0.5", "true", "\"red\""),
+// three bare numbers as an array ("1 2 3"), anything else as a string ("red").
+nlohmann::ordered_json parseValue(const std::string& text) {
+    try {
+        return nlohmann::ordered_json::parse(text);
+    } catch (const nlohmann::json::exception&) {
+    }
+    std::vector<std::string> parts = words(text);
+    if (parts.size() == 3) {
+        nlohmann::ordered_json array = nlohmann::ordered_json::array();
+        double v = 0;
+        for (const std::string& part : parts) {
+            if (!parseNumber(part, v)) return text;
+            array.push_back(v);
+        }
+        return array;
+    }
+    return text;
+}
+
+std::string joined(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const std::string& p : problems) text += (text.empty() ? "" : "; ") + p;
+    return text;
+}
+
+std::string knownKinds() {
+    std::string list;
+    for (const scene::KindSpec& k : scene::allKinds()) list += (list.empty() ? "" : ", ") + std::string(k.name);
+    return list;
+}
+
+}  // namespace
+
+std::vector<ScriptCommand> parseScript(std::string_view text, const std::string& source) {
+    std::vector<ScriptCommand> commands;
+    int lineNumber = 0;
+    while (!text.empty() || lineNumber == 0) {
+        size_t end = text.find('\n');
+        std::string_view line = trim(text.substr(0, end));
+        text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+        ++lineNumber;
+        if (line.empty() || line.front() == '#') {
+            if (text.empty()) break;
+            continue;
+        }
+        auto fail = [&](const std::string& reason) {
+            throw std::runtime_error(source + ":" + std::to_string(lineNumber) + ": " + reason);
+        };
+        std::vector<std::string> parts = words(line);
+        ScriptCommand command{lineNumber, parts.front(), {parts.begin() + 1, parts.end()}};
+        const CommandSpec* spec = findCommand(command.name);
+        if (!spec) {
+            std::string list;
+            for (const CommandSpec& s : kCommands) list += (list.empty() ? "" : ", ") + std::string(s.name);
+            fail("unknown command \"" + command.name + "\" (known: " + list + ")");
+        }
+        if (command.name == "set" && command.args.size() >= 2) {
+            // the value is the rest of the line, spaces included
+            std::string_view rest = trim(line.substr(line.find(command.args[0], command.name.size()) + command.args[0].size()));
+            command.args = {command.args[0], std::string(rest)};
+        }
+        int count = static_cast<int>(command.args.size());
+        if (count < spec->minArgs || count > spec->maxArgs) {
+            fail("wrong number of arguments (usage: " + std::string(spec->usage) + ")");
+        }
+        commands.push_back(std::move(command));
+        if (text.empty()) break;
+    }
+    return commands;
+}
+
+ScriptRunner::ScriptRunner(std::vector<ScriptCommand> commands, std::string source)
+    : commands_(std::move(commands)), source_(std::move(source)) {}
+
+ScriptStatus ScriptRunner::fail(const ScriptCommand& command, const std::string& reason) {
+    error_ = source_ + ":" + std::to_string(command.line) + ": " + command.name + ": " + reason;
+    return ScriptStatus::Failed;
+}
+
+bool ScriptRunner::waitIdle(const ScriptCommand& command, ScriptHost& host) {
+    if (!waitingIdle_) {
+        waitingIdle_ = true;
+        waitStart_ = std::chrono::steady_clock::now();
+    }
+    if (!host.idle()) {
+        return false;
+    }
+    waitingIdle_ = false;
+    return true;
+}
+
+ScriptStatus ScriptRunner::step(Editor& editor, UiState& ui, ScriptHost& host) {
+    if (!error_.empty()) return ScriptStatus::Failed;
+    if (next_ >= commands_.size()) return ScriptStatus::Finished;
+    const ScriptCommand& command = commands_[next_];
+    ScriptStatus status = run(command, editor, ui, host);
+    if (status == ScriptStatus::Failed) return status;
+    if (waitingIdle_ && std::chrono::steady_clock::now() - waitStart_ > idleTimeout) {
+        return fail(command, "still busy after " + std::to_string(idleTimeout.count()) +
+                                 " s (renders, shader compiles or thumbnails did not finish)");
+    }
+    return next_ >= commands_.size() && status != ScriptStatus::Running ? ScriptStatus::Finished
+                                                                        : ScriptStatus::Running;
+}
+
+// Returns Running while the command waits (next_ unchanged), otherwise advances.
+ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& ui, ScriptHost& host) {
+    const std::vector<std::string>& a = c.args;
+    auto done = [&](const Problems& problems = {}) {
+        if (!problems.empty()) return fail(c, joined(problems));
+        ++next_;
+        return ScriptStatus::Finished;
+    };
+    auto needSelection = [&]() -> const NodePath* { return editor.selection() ? &*editor.selection() : nullptr; };
+    auto kindArg = [&](const std::string& name) -> const scene::KindSpec* { return scene::findKind(name); };
+
+    if (c.name == "select") {
+        if (a[0] == "none") {
+            editor.select(std::nullopt);
+            return done();
+        }
+        std::optional<NodePath> path = parseNodePath(a[0]);
+        if (!path) return fail(c, "\"" + a[0] + "\" is not a node path (write e.g. root.children[0])");
+        if (!findNode(editor.scene().root, *path)) return fail(c, a[0] + ": no such node");
+        editor.select(path);
+        return done();
+    }
+    if (c.name == "set") {
+        bool sceneLevel = a[0].find_first_of(".[") != std::string::npos;
+        if (sceneLevel) return done(editor.setJsonValue(a[0], parseValue(a[1])));
+        const NodePath* selected = needSelection();
+        if (!selected) return fail(c, "no node selected (use select <node path>, or a JSON path such as render.aa)");
+        return done(editor.setJsonValue(formatNodePath(*selected) + "." + a[0], parseValue(a[1])));
+    }
+    if (c.name == "add" || c.name == "wrap") {
+        const scene::KindSpec* kind = kindArg(a[0]);
+        if (!kind) return fail(c, "unknown node kind \"" + a[0] + "\" (known: " + knownKinds() + ")");
+        if (c.name == "wrap") {
+            const NodePath* selected = needSelection();
+            if (!selected) return fail(c, "no node selected");
+            return done(editor.wrap(*selected, kind->kind));
+        }
+        std::optional<NodePath> under;
+        if (a.size() > 1) {
+            if (a.size() != 3 || a[1] != "under") return fail(c, "usage: add <kind> [under <node path>]");
+            under = parseNodePath(a[2]);
+            if (!under) return fail(c, "\"" + a[2] + "\" is not a node path");
+        }
+        return done(editor.add(kind->kind, under));
+    }
+    if (c.name == "duplicate" || c.name == "delete" || c.name == "rename" || c.name == "move") {
+        const NodePath* selected = needSelection();
+        if (!selected) return fail(c, "no node selected");
+        NodePath path = *selected;
+        if (c.name == "duplicate") return done(editor.duplicate(path));
+        if (c.name == "delete") return done(editor.remove(path));
+        if (c.name == "rename") return done(editor.rename(path, a[0]));
+        std::optional<NodePath> parent = parseNodePath(a[0]);
+        double index = 0;
+        if (!parent) return fail(c, "\"" + a[0] + "\" is not a node path");
+        if (!parseNumber(a[1], index) || index < 0 || index != std::floor(index)) {
+            return fail(c, "index must be a whole number >= 0 (got " + a[1] + ")");
+        }
+        return done(editor.move(path, *parent, static_cast<int>(index)));
+    }
+    if (c.name == "undo") return editor.undo() ? done() : fail(c, "nothing to undo");
+    if (c.name == "redo") return editor.redo() ? done() : fail(c, "nothing to redo");
+    if (c.name == "backend") {
+        if (a[0] != "cpu" && a[0] != "gl") return fail(c, "must be cpu or gl (got " + a[0] + ")");
+        ui.backend = a[0] == "cpu" ? ViewBackend::Cpu : ViewBackend::Gl;
+        return done();
+    }
+    if (c.name == "compare") {
+        if (a[0] == "off") ui.compare = CompareMode::Off;
+        else if (a[0] == "side") ui.compare = CompareMode::SideBySide;
+        else if (a[0] == "diff") ui.compare = CompareMode::Difference;
+        else return fail(c, "must be off, side or diff (got " + a[0] + ")");
+        return done();
+    }
+    if (c.name == "heat") {
+        if (a[0] != "on" && a[0] != "off") return fail(c, "must be on or off (got " + a[0] + ")");
+        ui.stepHeat = a[0] == "on";
+        return done();
+    }
+    if (c.name == "camera") {
+        double v[3];
+        for (int i = 0; i < 3; ++i) {
+            if (!parseNumber(a[static_cast<size_t>(i)], v[i])) return fail(c, "\"" + a[static_cast<size_t>(i)] + "\" is not a number");
+        }
+        nlohmann::ordered_json camera = {{"azimuth", v[0]}, {"elevation", v[1]}, {"distance", v[2]}};
+        Problems problems;
+        for (auto& [key, value] : camera.items()) {
+            Problems p = editor.setJsonValue("camera." + key, value, "script camera");
+            problems.insert(problems.end(), p.begin(), p.end());
+        }
+        editor.endMerge();
+        return done(problems);
+    }
+    if (c.name == "wait") {
+        if (a[0] == "idle") {
+            if (!waitIdle(c, host)) return ScriptStatus::Running;
+            return done();
+        }
+        double frames = 0;
+        if (!parseNumber(a[0], frames) || frames < 0 || frames != std::floor(frames)) {
+            return fail(c, "must be a whole number of frames or idle (got " + a[0] + ")");
+        }
+        if (framesLeft_ < 0) framesLeft_ = static_cast<int>(frames);
+        if (framesLeft_-- > 0) return ScriptStatus::Running;
+        framesLeft_ = -1;
+        return done();
+    }
+    if (c.name == "screenshot") {
+        if (!waitIdle(c, host)) return ScriptStatus::Running;
+        std::string problem = host.requestScreenshot(a[0]);
+        return problem.empty() ? done() : fail(c, problem);
+    }
+    if (c.name == "save" || c.name == "open") {
+        std::string problem = c.name == "save" ? host.save(a[0]) : host.open(a[0]);
+        return problem.empty() ? done() : fail(c, problem);
+    }
+    if (c.name == "quit") {
+        if (a.size() == 1 && a[0] != "discard") return fail(c, "usage: quit [discard]");
+        if (a.empty() && editor.dirty()) {
+            return fail(c, "the scene has unsaved changes (save it first, or use quit discard)");
+        }
+        host.quit();
+        return done();
+    }
+    return fail(c, "not implemented");  // parseScript admits only the commands above
+}
+
+std::string screenshotScript(const std::string& output, int frames) {
+    return "wait " + std::to_string(frames) + "\nscreenshot " + output + "\nquit discard\n";
+}
+
+}  // namespace sdfwb::ui
