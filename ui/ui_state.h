@@ -31,6 +31,9 @@ struct UiState {
     // Problems of the last refused inspector edit, shown inline under it.
     std::vector<std::string> inspectorProblems;
 
+    // Name typed for "save the selection to the primitive library".
+    std::string libraryName;
+
     // A subtree being dragged in the scene tree (thumbnails pause meanwhile).
     bool draggingNode = false;
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <vector>
 
+#include "gl/render_targets.h"
 #include "gl/shader_generator.h"
 #include "glcontext/gl_debug.h"
 #include "glcontext/shader_program.h"
@@ -28,40 +29,6 @@ const char* const kUniformNames[] = {
     "uSubsample", "uAA", "uMaxSteps", "uMaxDistance", "uEpsilon", "uEpsilonPerDistance", "uShadowMode",
     "uShadowSteps", "uAoSamples", "uAoDistance", "uLightingModel", "uLightCount", "uAmbientLight", "uBackground",
     "uLightDirection", "uLightColor", "uLightSoftness"};
-
-// A pair of RGBA32F textures (colour sum, statistics sum) in one framebuffer.
-struct Targets {
-    glcontext::GlObject framebuffer, color, stats;
-};
-
-Targets makeTargets(const glcontext::GlFunctions& gl, int width, int height) {
-    Targets t{glcontext::makeFramebuffer(gl), glcontext::makeTexture(gl), glcontext::makeTexture(gl)};
-    for (GLuint texture : {t.color.get(), t.stats.get()}) {
-        gl.BindTexture(GL_TEXTURE_2D, texture);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    gl.BindTexture(GL_TEXTURE_2D, 0);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.get());
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.color.get(), 0);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, t.stats.get(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    gl.DrawBuffers(2, buffers);
-    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        throw GlError("GL backend: float render targets of " + std::to_string(width) + "x" + std::to_string(height) +
-                      " are not supported by this context");
-    }
-    return t;
-}
-
-std::vector<float> readAttachment(const glcontext::GlFunctions& gl, GLenum attachment, int width, int height) {
-    std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-    gl.ReadBuffer(attachment);
-    gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
-    return pixels;
-}
 
 }  // namespace
 
@@ -160,22 +127,65 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     gl_.Uniform1fv(cached.uniform("uLightSoftness"), 8, softness.data());
 }
 
+bool GlRenderer::hasProgram(const program::Program& program) const {
+    return cache_.contains(program.structureKey());
+}
+
+glcontext::GlObject GlRenderer::releaseProgram(const program::Program& program) {
+    auto it = cache_.find(program.structureKey());
+    if (it == cache_.end()) return {};
+    if (bound_ == it->second.get()) bound_ = nullptr;
+    glcontext::GlObject linked = std::move(it->second->program);
+    cache_.erase(it);
+    return linked;
+}
+
+void GlRenderer::adoptProgram(const program::Program& program, glcontext::GlObject linked) {
+    auto cached = std::make_unique<CachedProgram>();
+    cached->program = std::move(linked);
+    for (const char* name : kUniformNames) {
+        cached->uniforms[name] = gl_.GetUniformLocation(cached->program.get(), name);
+    }
+    auto& slot = cache_[program.structureKey()];
+    if (bound_ == slot.get()) bound_ = nullptr;
+    slot = std::move(cached);
+}
+
+void GlRenderer::bindForDrawing(const program::Program& program) {
+    bound_ = &programFor(program);
+    uploadParameters(program, *bound_);
+    gl_.BindVertexArray(vertexArray_.get());
+}
+
+void GlRenderer::drawSubsample(int m, int n) {
+    gl_.Uniform2i(bound_->uniform("uSubsample"), m, n);
+    gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void GlRenderer::setDrawState(bool on) {
+    if (on) {
+        gl_.Enable(GL_SCISSOR_TEST);
+        // Sub-sample passes add up in float, in the same order as the CPU backend's loop.
+        gl_.Enable(GL_BLEND);
+        gl_.BlendEquation(GL_FUNC_ADD);
+        gl_.BlendFunc(GL_ONE, GL_ONE);
+    } else {
+        gl_.Disable(GL_BLEND);
+        gl_.Disable(GL_SCISSOR_TEST);
+        gl_.BindVertexArray(0);
+    }
+}
+
 GlRenderOutcome GlRenderer::render(const program::Program& program, const GlRenderControl& control) {
-    const CachedProgram& cached = programFor(program);
-    uploadParameters(program, cached);
+    bindForDrawing(program);
     const int width = program.width, height = program.height, aa = program.aa;
-    Targets targets = makeTargets(gl_, width, height);
+    RenderTargets targets = makeRenderTargets(gl_, width, height);
 
     const float zero[4] = {0, 0, 0, 0};
     gl_.ClearBufferfv(GL_COLOR, 0, zero);
     gl_.ClearBufferfv(GL_COLOR, 1, zero);
     gl_.Viewport(0, 0, width, height);
-    gl_.Enable(GL_SCISSOR_TEST);
-    // Sub-sample passes add up in float, in the same order as the CPU backend's loop.
-    gl_.Enable(GL_BLEND);
-    gl_.BlendEquation(GL_FUNC_ADD);
-    gl_.BlendFunc(GL_ONE, GL_ONE);
-    gl_.BindVertexArray(vertexArray_.get());
+    setDrawState(true);
 
     const int tile = std::max(16, control.tileSize);
     const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
@@ -191,8 +201,7 @@ GlRenderOutcome GlRenderer::render(const program::Program& program, const GlRend
                         outcome.cancelled = true;
                         break;
                     }
-                    gl_.Uniform2i(cached.uniform("uSubsample"), m, n);
-                    gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+                    drawSubsample(m, n);
                     // one draw at a time: a long queue would make cancel and progress lag
                     gl_.Finish();
                     if (control.progress) control.progress(++drawsDone, drawsTotal);
@@ -200,29 +209,11 @@ GlRenderOutcome GlRenderer::render(const program::Program& program, const GlRend
             }
         }
     }
-    gl_.Disable(GL_BLEND);
-    gl_.Disable(GL_SCISSOR_TEST);
-    gl_.BindVertexArray(0);
+    setDrawState(false);
 
     if (!outcome.cancelled) {
-        std::vector<float> color = readAttachment(gl_, GL_COLOR_ATTACHMENT0, width, height);
-        std::vector<float> stats = readAttachment(gl_, GL_COLOR_ATTACHMENT1, width, height);
-        image::Frame& frame = outcome.frame;
-        frame.color = image::Image(width, height);
-        frame.steps.assign(frame.color.pixelCount(), 0.0f);
-        frame.coverage.assign(frame.color.pixelCount(), 0.0f);
-        const float samples = static_cast<float>(aa * aa);
-        for (int y = 0; y < height; ++y) {
-            // GL rows start at the bottom; frames start at the top
-            size_t source = static_cast<size_t>(height - 1 - y) * static_cast<size_t>(width);
-            size_t target = static_cast<size_t>(y) * static_cast<size_t>(width);
-            for (int x = 0; x < width; ++x) {
-                size_t s = (source + static_cast<size_t>(x)) * 4, t = target + static_cast<size_t>(x);
-                for (int c = 0; c < 3; ++c) frame.color.rgb[3 * t + static_cast<size_t>(c)] = color[s + static_cast<size_t>(c)] / samples;
-                frame.steps[t] = stats[s] / samples;
-                frame.coverage[t] = stats[s + 1] / samples;
-            }
-        }
+        outcome.frame = blankFrame(width, height);
+        readFrameRegion(gl_, targets, 0, 0, width, height, aa * aa, outcome.frame);
     }
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl_.UseProgram(0);

@@ -57,11 +57,34 @@ public:
     GlRenderOutcome render(const program::Program& program, const GlRenderControl& control = {});
 
     const GlCounters& counters() const { return counters_; }
+    const glcontext::GlFunctions& functions() const { return gl_; }
+
+    // --- Handing programs between sharing contexts ---
+    // A worker renderer builds (and warms up) a program in its own context; the
+    // UI thread's renderer adopts it, so the UI never waits on a compile.
+    bool hasProgram(const program::Program& program) const;
+    // Removes the built program for `program`'s structure from this cache and
+    // returns it (empty if none). Call glFinish (or fence) before handing over.
+    glcontext::GlObject releaseProgram(const program::Program& program);
+    // Caches a linked program built for `program`'s structure by a context
+    // sharing objects with this one (counts neither a generation nor a compile).
+    void adoptProgram(const program::Program& program, glcontext::GlObject linked);
+
+    // --- Draw-by-draw rendering (render() and gl/progressive_render.h) ---
+    // Uses the program for `program`'s structure (building it if needed),
+    // uploads its parameters and binds what a draw needs.
+    void bindForDrawing(const program::Program& program);
+    // One full-screen pass of sub-sample (m, n) into the bound framebuffer,
+    // within the current viewport and scissor, added to what is there.
+    void drawSubsample(int m, int n);
+    // Sets the blend and scissor state draws need (on) or restores it (off).
+    void setDrawState(bool on);
 
 private:
     struct CachedProgram;
     const CachedProgram& programFor(const program::Program& program);
     void uploadParameters(const program::Program& program, const CachedProgram& cached);
+    const CachedProgram* bound_ = nullptr;
 
     glcontext::GlFunctions gl_;
     std::map<std::uint64_t, std::unique_ptr<CachedProgram>> cache_;

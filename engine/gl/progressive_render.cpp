@@ -1,0 +1,67 @@
+#include "gl/progressive_render.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "glcontext/gl_debug.h"
+
+namespace sdfwb::gl {
+
+ProgressiveRender::ProgressiveRender(GlRenderer& renderer, program::Program program, int tileSize)
+    : renderer_(renderer),
+      gl_(renderer.functions()),
+      program_(std::move(program)),
+      targets_(makeRenderTargets(gl_, program_.width, program_.height)),
+      frame_(blankFrame(program_.width, program_.height)) {
+    const float zero[4] = {0, 0, 0, 0};
+    gl_.ClearBufferfv(GL_COLOR, 0, zero);
+    gl_.ClearBufferfv(GL_COLOR, 1, zero);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    const int tile = std::max(16, tileSize);
+    for (int y = 0; y < program_.height; y += tile) {
+        for (int x = 0; x < program_.width; x += tile) {
+            tiles_.push_back({x, y, std::min(tile, program_.width - x), std::min(tile, program_.height - y)});
+        }
+    }
+}
+
+double ProgressiveRender::progress() const {
+    const size_t samples = static_cast<size_t>(program_.aa * program_.aa);
+    if (tiles_.empty()) return 1.0;
+    return static_cast<double>(next_ * samples + static_cast<size_t>(subsample_)) /
+           static_cast<double>(tiles_.size() * samples);
+}
+
+std::vector<TileRect> ProgressiveRender::advance(double budgetSeconds) {
+    std::vector<TileRect> finished;
+    if (done()) return finished;
+    const auto start = std::chrono::steady_clock::now();
+    const int aa = program_.aa;
+    renderer_.bindForDrawing(program_);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, targets_.framebuffer.get());
+    gl_.Viewport(0, 0, program_.width, program_.height);
+    renderer_.setDrawState(true);
+    do {
+        const TileRect& tile = tiles_[next_];
+        gl_.Scissor(tile.x, program_.height - (tile.y + tile.h), tile.w, tile.h);
+        renderer_.drawSubsample(subsample_ / aa, subsample_ % aa);
+        // Wait for this draw only: the budget is measured on finished work.
+        GLsync fence = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        gl_.ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 10'000'000'000ull);
+        gl_.DeleteSync(fence);
+        if (++subsample_ == aa * aa) {
+            readFrameRegion(gl_, targets_, tile.x, tile.y, tile.w, tile.h, aa * aa, frame_);
+            finished.push_back(tile);
+            subsample_ = 0;
+            ++next_;
+        }
+    } while (!done() && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < budgetSeconds);
+    drawSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    renderer_.setDrawState(false);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl_.UseProgram(0);
+    glcontext::checkGlError(gl_, "ProgressiveRender::advance");
+    return finished;
+}
+
+}  // namespace sdfwb::gl

@@ -1,0 +1,154 @@
+// The inspector: the selected node's name and fields, with a widget per field
+// type chosen from the node-kind table, and its material.
+
+#include <limits>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "ui/panel_widgets.h"
+#include "ui/panels.h"
+
+namespace sdfwb::ui {
+namespace {
+
+using scene::FieldSpec;
+using scene::FieldType;
+using scene::Range;
+
+constexpr double kHuge = std::numeric_limits<double>::max();
+
+// Drag speed and limits that suit a field: angles move by half degrees,
+// sizes never go below zero through the drag (typed values are validated).
+struct DragRange {
+    double speed, minimum, maximum;
+};
+DragRange dragRangeFor(const FieldSpec& field) {
+    bool angle = field.unit == "degrees";
+    double speed = angle ? 0.5 : 0.01;
+    switch (field.range) {
+    case Range::Positive: return {speed, 1e-4, kHuge};
+    case Range::NonNegative: return {speed, 0.0, kHuge};
+    case Range::NonNegativeInteger: return {0.05, 0.0, 1e6};
+    case Range::Integer2or3: return {0.05, 2.0, 3.0};
+    case Range::OpenAngle90: return {0.25, 0.5, 89.5};
+    case Range::Any:
+    case Range::NonZeroVector: return {speed, -kHuge, kHuge};
+    }
+    return {speed, -kHuge, kHuge};
+}
+
+std::string fieldLabel(const FieldSpec& field) {
+    std::string label(field.name);
+    if (!field.unit.empty()) label += " (" + std::string(field.unit) + ")";
+    return label;
+}
+
+void materialCombo(Editor& editor, UiState& ui, const NodePath& path, const FieldSpec& field,
+                   const std::string& current) {
+    const scene::Scene& scene = editor.scene();
+    if (ImGui::BeginCombo("material", current.empty() ? "(default)" : current.c_str())) {
+        if (ImGui::Selectable("(default)", current.empty())) {
+            reportProblems(ui, editor.setField(path, field.name, std::string()));
+        }
+        for (const scene::Material& m : scene.materials) {
+            if (ImGui::Selectable(m.name.c_str(), m.name == current)) {
+                reportProblems(ui, editor.setField(path, field.name, m.name));
+            }
+        }
+        ImGui::Separator();
+        if (ImGui::Selectable("New material")) {
+            std::string name;
+            for (int i = 1; name.empty() || scene.findMaterial(name); ++i) name = "material " + std::to_string(i);
+            Problems problems = editor.apply("New material", [&](scene::Scene& s) {
+                scene::Material m;
+                m.name = name;
+                s.materials.push_back(m);
+                findNode(s.root, path)->set(field.name, name);
+            });
+            reportProblems(ui, problems);
+        }
+        ImGui::EndCombo();
+    }
+}
+
+void fieldWidget(Editor& editor, UiState& ui, const NodePath& path, const FieldSpec& field,
+                 const scene::FieldValue& value) {
+    std::string label = fieldLabel(field);
+    auto setter = [&](scene::FieldValue v) {
+        return [&path, &field, v](scene::Scene& s) { findNode(s.root, path)->set(field.name, v); };
+    };
+    switch (field.type) {
+    case FieldType::Real: {
+        double v = std::get<double>(value);
+        DragRange r = dragRangeFor(field);
+        const char* format = field.range == Range::Integer2or3 || field.range == Range::NonNegativeInteger ? "%.0f" : "%.3f";
+        WidgetEdit edit = dragReal(label.c_str(), v, r.speed, r.minimum, r.maximum, format);
+        commitEdit(editor, ui, edit, "Edit field", setter(v));
+        break;
+    }
+    case FieldType::Vec3: {
+        glm::dvec3 v = std::get<glm::dvec3>(value);
+        DragRange r = dragRangeFor(field);
+        const char* format = field.range == Range::NonNegativeInteger ? "%.0f" : "%.3f";
+        WidgetEdit edit = dragVec3(label.c_str(), v, r.speed, r.minimum, r.maximum, format);
+        commitEdit(editor, ui, edit, "Edit field", setter(v));
+        break;
+    }
+    case FieldType::Choice: {
+        const std::string& current = std::get<std::string>(value);
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+            for (std::string_view choice : field.choices) {
+                if (ImGui::Selectable(std::string(choice).c_str(), choice == current)) {
+                    reportProblems(ui, editor.setField(path, field.name, std::string(choice)));
+                }
+            }
+            ImGui::EndCombo();
+        }
+        break;
+    }
+    case FieldType::Material:
+        materialCombo(editor, ui, path, field, std::get<std::string>(value));
+        break;
+    }
+}
+
+}  // namespace
+
+void drawInspector(Editor& editor, UiState& ui) {
+    const scene::Node* node = editor.selectedNode();
+    if (!node) {
+        ImGui::TextDisabled("Select a node in the scene tree.");
+        return;
+    }
+    const NodePath path = *editor.selection();
+    const scene::KindSpec& spec = scene::kindSpec(node->kind);
+    ImGui::Text("%s", std::string(spec.name).c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s  (%s)", formatNodePath(path).c_str(),
+                        spec.quality == scene::DistanceQuality::Exact ? "exact" : "bound");
+    std::string name = node->name;
+    if (ImGui::InputText("name", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        reportProblems(ui, editor.rename(path, name));
+    }
+    ImGui::PushItemWidth(-110);
+    for (size_t i = 0; i < spec.fields.size(); ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        // the node may have been replaced by an edit above: read it again
+        const scene::Node* current = findNode(editor.scene().root, path);
+        if (current) fieldWidget(editor, ui, path, spec.fields[i], current->fields[i]);
+        ImGui::PopID();
+    }
+    ImGui::PopItemWidth();
+    if (spec.maxChildren != 0) {
+        ImGui::TextDisabled("%zu child%s; %s", node->children.size(), node->children.size() == 1 ? "" : "ren",
+                            spec.category == scene::NodeCategory::Boolean ? "folded in child order" : "");
+    }
+    for (const std::string& problem : ui.inspectorProblems) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+        ImGui::TextWrapped("%s", problem.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+}  // namespace sdfwb::ui

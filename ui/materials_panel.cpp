@@ -1,0 +1,66 @@
+// Materials: the scene's list, each editable (the thesis's R_A, R_D, R_E,
+// alpha, L_E); add, rename (references follow) and remove (refused while a
+// node uses it, with the loader's message).
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "ui/panel_widgets.h"
+#include "ui/panels.h"
+
+namespace sdfwb::ui {
+namespace {
+
+void renameReferences(scene::Node& node, const std::string& from, const std::string& to) {
+    int index = scene::fieldIndex(scene::kindSpec(node.kind), "material");
+    if (index >= 0 && std::get<std::string>(node.fields[static_cast<size_t>(index)]) == from) {
+        node.fields[static_cast<size_t>(index)] = to;
+    }
+    for (scene::Node& child : node.children) renameReferences(child, from, to);
+}
+
+}  // namespace
+
+void drawMaterialsPanel(Editor& editor, UiState& ui) {
+    const scene::Scene& scene = editor.scene();
+    if (ImGui::Button("Add material")) {
+        std::string name;
+        for (int i = 1; name.empty() || scene.findMaterial(name); ++i) name = "material " + std::to_string(i);
+        reportProblems(ui, editor.apply("Add material", [&](scene::Scene& s) {
+            scene::Material m;
+            m.name = name;
+            s.materials.push_back(m);
+        }));
+    }
+    for (size_t i = 0; i < editor.scene().materials.size(); ++i) {
+        scene::Material m = editor.scene().materials[i];
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::CollapsingHeader(m.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+            auto set = [&, i](const char* label, WidgetEdit edit) {
+                commitEdit(editor, ui, edit, label, [&m, i](scene::Scene& s) { s.materials[i] = m; });
+            };
+            std::string name = m.name;
+            if (ImGui::InputText("name", &name, ImGuiInputTextFlags_EnterReturnsTrue) && name != m.name) {
+                std::string old = m.name;
+                reportProblems(ui, editor.apply("Rename material", [&](scene::Scene& s) {
+                    s.materials[i].name = name;
+                    renameReferences(s.root, old, name);
+                    if (s.environment.ground.material == old) s.environment.ground.material = name;
+                }));
+            }
+            set("Edit material", colorEdit("diffuse", m.diffuse));
+            set("Edit material", colorEdit("ambient", m.ambient));
+            set("Edit material", colorEdit("specular", m.specular));
+            set("Edit material", dragReal("shininess", m.shininess, 0.5, 0.1, 4096.0, "%.1f"));
+            set("Edit material", colorEdit("emission", m.emission));
+            if (ImGui::SmallButton("Remove")) {
+                reportProblems(ui, editor.apply("Remove material", [i](scene::Scene& s) {
+                    s.materials.erase(s.materials.begin() + static_cast<long>(i));
+                }));
+            }
+        }
+        ImGui::PopID();
+    }
+}
+
+}  // namespace sdfwb::ui

@@ -1,0 +1,32 @@
+#pragma once
+// Widgets shared by the panels: value editors that commit through the Editor
+// with slider drags merged into one undo step.
+
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "ui/editor.h"
+#include "ui/ui_state.h"
+
+namespace sdfwb::ui {
+
+// Edits `value` in place with a drag widget; returns true when the value
+// changed this frame. `endMerge` is set when the drag (or typed edit) ended.
+struct WidgetEdit {
+    bool changed = false;
+    bool finished = false;
+};
+WidgetEdit dragReal(const char* label, double& value, double speed, double minimum, double maximum,
+                    const char* format = "%.3f");
+WidgetEdit dragVec3(const char* label, glm::dvec3& value, double speed, double minimum, double maximum,
+                    const char* format = "%.3f");
+WidgetEdit colorEdit(const char* label, glm::dvec3& value);
+
+// Commits a scene change made by a widget: merges while the widget stays
+// active (key = the widget's id), reports refused edits, ends the merge when
+// the widget is released.
+void commitEdit(Editor& editor, UiState& ui, const WidgetEdit& edit, const char* label,
+                const std::function<void(scene::Scene&)>& change);
+
+}  // namespace sdfwb::ui

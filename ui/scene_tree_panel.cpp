@@ -1,0 +1,160 @@
+// The scene tree: one row per node (kind, name, thumbnail), selection,
+// context menu (add, wrap, duplicate, delete, rename), and drag and drop:
+// dropping on a row's upper or lower edge puts the node before or after it,
+// on its middle into it.
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "ui/panels.h"
+
+namespace sdfwb::ui {
+namespace {
+
+constexpr const char* kDragType = "SDFWB_NODE";
+constexpr float kThumbnailSize = 32.0f;
+
+struct TreeContext {
+    Editor& editor;
+    UiState& ui;
+    const ThumbnailLookup& thumbnails;
+    // Applied after the tree is drawn, so the tree never changes mid-walk.
+    std::function<void()> pending;
+};
+
+std::string rowLabel(const scene::Node& node) {
+    std::string label(scene::kindSpec(node.kind).name);
+    if (!node.name.empty()) label += "  \"" + node.name + "\"";
+    return label;
+}
+
+void dropTarget(TreeContext& tree, const NodePath& path, const scene::Node& node) {
+    if (!ImGui::BeginDragDropTarget()) return;
+    if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kDragType)) {
+        auto* data = static_cast<const int*>(payload->Data);
+        NodePath from(data, data + payload->DataSize / static_cast<int>(sizeof(int)));
+        // where in the row the mouse is: top quarter before, bottom quarter after, else into
+        float top = ImGui::GetItemRectMin().y, height = ImGui::GetItemRectSize().y;
+        float t = (ImGui::GetMousePos().y - top) / height;
+        bool into = scene::kindSpec(node.kind).maxChildren != 0 && t > 0.25f && t < 0.75f;
+        if (into || path.empty()) {
+            tree.pending = [&tree, from, path] { reportProblems(tree.ui, tree.editor.move(from, path, -1)); };
+        } else {
+            int index = path.back() + (t >= 0.5f ? 1 : 0);
+            NodePath parent = parentOf(path);
+            tree.pending = [&tree, from, parent, index] {
+                reportProblems(tree.ui, tree.editor.move(from, parent, index));
+            };
+        }
+    }
+    ImGui::EndDragDropTarget();
+}
+
+void contextMenu(TreeContext& tree, const NodePath& path) {
+    if (!ImGui::BeginPopupContextItem()) return;
+    tree.editor.select(path);
+    if (ImGui::BeginMenu("Add")) {
+        drawAddMenuItems(tree.editor, tree.ui);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Wrap in")) {
+        drawWrapMenuItems(tree.editor, tree.ui);
+        ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, !path.empty())) {
+        tree.pending = [&tree, path] { reportProblems(tree.ui, tree.editor.duplicate(path)); };
+    }
+    if (ImGui::MenuItem("Delete", "Del", false, !path.empty())) {
+        tree.pending = [&tree, path] { reportProblems(tree.ui, tree.editor.remove(path)); };
+    }
+    ImGui::Separator();
+    const scene::Node* node = findNode(tree.editor.scene().root, path);
+    std::string name = node ? node->name : "";
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::InputTextWithHint("##rename", "name", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        tree.pending = [&tree, path, name] { reportProblems(tree.ui, tree.editor.rename(path, name)); };
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void drawNode(TreeContext& tree, const scene::Node& node, NodePath& path) {
+    ImGui::PushID(static_cast<int>(path.empty() ? -1 : path.back()));
+    if (tree.thumbnails) {
+        ImTextureID texture = tree.thumbnails(path, node);
+        if (texture) {
+            ImGui::Image(texture, ImVec2(kThumbnailSize, kThumbnailSize));
+        } else {
+            ImGui::Dummy(ImVec2(kThumbnailSize, kThumbnailSize));
+        }
+        ImGui::SameLine();
+    }
+    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen |
+                               ImGuiTreeNodeFlags_SpanAvailWidth | ImGuiTreeNodeFlags_FramePadding;
+    if (node.children.empty()) flags |= ImGuiTreeNodeFlags_Leaf;
+    if (tree.editor.selection() == path) flags |= ImGuiTreeNodeFlags_Selected;
+    if (tree.thumbnails) {
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, (kThumbnailSize - ImGui::GetTextLineHeight()) / 2));
+    }
+    bool open = ImGui::TreeNodeEx("node", flags, "%s", rowLabel(node).c_str());
+    if (tree.thumbnails) ImGui::PopStyleVar();
+    if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) {
+        tree.editor.select(path);
+        tree.ui.inspectorProblems.clear();
+    }
+    if (!path.empty() && ImGui::BeginDragDropSource()) {
+        ImGui::SetDragDropPayload(kDragType, path.data(), path.size() * sizeof(int));
+        ImGui::Text("move %s", rowLabel(node).c_str());
+        tree.ui.draggingNode = true;
+        ImGui::EndDragDropSource();
+    }
+    dropTarget(tree, path, node);
+    contextMenu(tree, path);
+    if (open) {
+        for (size_t i = 0; i < node.children.size(); ++i) {
+            path.push_back(static_cast<int>(i));
+            drawNode(tree, node.children[i], path);
+            path.pop_back();
+        }
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
+}
+
+}  // namespace
+
+void drawSceneTree(Editor& editor, UiState& ui, const ThumbnailLookup& thumbnails) {
+    TreeContext tree{editor, ui, thumbnails, {}};
+    ui.draggingNode = false;
+    NodePath path;
+    drawNode(tree, editor.scene().root, path);
+    if (tree.pending) tree.pending();
+}
+
+void drawAddMenuItems(Editor& editor, UiState& ui) {
+    const char* heading = nullptr;
+    for (const scene::KindSpec& spec : scene::allKinds()) {
+        if (spec.minChildren > 0) continue;  // unary operators are in the Wrap menu
+        const char* category = spec.category == scene::NodeCategory::Primitive ? "Primitives" : "Operations";
+        if (category != heading) {
+            if (heading) ImGui::Separator();
+            ImGui::TextDisabled("%s", category);
+            heading = category;
+        }
+        if (ImGui::MenuItem(std::string(spec.name).c_str())) {
+            reportProblems(ui, editor.add(spec.kind, std::nullopt));
+        }
+    }
+}
+
+void drawWrapMenuItems(Editor& editor, UiState& ui) {
+    bool enabled = editor.selection().has_value();
+    for (const scene::KindSpec& spec : scene::allKinds()) {
+        if (spec.maxChildren == 0) continue;
+        if (ImGui::MenuItem(std::string(spec.name).c_str(), nullptr, false, enabled)) {
+            reportProblems(ui, editor.wrap(*editor.selection(), spec.kind));
+        }
+    }
+}
+
+}  // namespace sdfwb::ui
