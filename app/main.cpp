@@ -7,13 +7,22 @@
 #include <CLI/CLI.hpp>
 
 #include "app/compare_command.h"
+#include "app/gui/gui_command.h"
 #include "app/parity_command.h"
 #include "app/render_command.h"
 
 namespace {
 
-// With no subcommand and no display, the main job is a snapshot of the default scene.
+// With no subcommand: the workbench window on the default scene when a display
+// exists, otherwise (or when no window opens) a snapshot of the default scene.
 int runDefaultJob() {
+    if (sdfwb::app::gui::displayAvailable()) {
+        int code = sdfwb::app::gui::runGui({});
+        if (code != sdfwb::app::gui::kNoWindow) {
+            return code;
+        }
+        std::fprintf(stderr, "sdf-workbench: no window; writing a snapshot instead\n");
+    }
     sdfwb::app::RenderArguments snapshot;
     snapshot.output = (std::filesystem::current_path() / "sdf-workbench-default.png").string();
     return sdfwb::app::runRender(snapshot);
@@ -30,7 +39,13 @@ int main(int argc, char** argv) {
     CLI::App* compare = sdfwb::app::addCompareCommand(app, compareArguments);
     sdfwb::app::ParityArguments parityArguments;
     CLI::App* parity = sdfwb::app::addParityCommand(app, parityArguments);
+    sdfwb::app::gui::GuiArguments guiArguments;
+    CLI::App* gui = sdfwb::app::gui::addGuiCommand(app, guiArguments);
     CLI11_PARSE(app, argc, argv);
+    if (gui->parsed()) {
+        int code = sdfwb::app::gui::runGui(guiArguments);
+        return code == sdfwb::app::gui::kNoWindow ? 1 : code;
+    }
     if (render->parsed()) {
         return sdfwb::app::runRender(renderArguments);
     }

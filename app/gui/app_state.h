@@ -1,0 +1,69 @@
+#pragma once
+// What the GUI holds while it runs: the edit layer and UI state (ui/), the
+// renderers (viewport, thumbnails), the file state and script. Plain data
+// with the parts that own resources; the behaviour lives in functions per
+// concern (main_window.cpp, viewport_panel.cpp, file_actions.cpp, ...).
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/gui/glfw_context.h"
+#include "app/gui/snapshot_export.h"
+#include "app/gui/thumbnails.h"
+#include "app/gui/viewport.h"
+#include "ui/editor.h"
+#include "ui/script.h"
+#include "ui/ui_state.h"
+
+struct GLFWwindow;
+
+namespace sdfwb::app::gui {
+
+// An action that replaces or ends the document, held while the user answers
+// "save changes?".
+struct PendingAction {
+    enum class Kind { None, New, Open, Quit } kind = Kind::None;
+    std::filesystem::path path;  // Open
+};
+
+struct FileDialogState {
+    enum class Purpose { None, Open, SaveAs } purpose = Purpose::None;
+    std::string directory;
+    std::string path;  // the text field
+};
+
+struct FileState {
+    std::filesystem::path current;  // "" for an unsaved new scene
+    FileDialogState dialog;
+    PendingAction pending;
+    bool askUnsaved = false;        // the "save changes?" prompt is open
+    bool offerRestore = false;      // the autosave restore prompt is open
+    double lastAutosave = 0;        // glfwGetTime() of the last autosave check
+};
+
+struct ViewRequest {
+    int width = 0, height = 0;  // framebuffer pixels of the image area
+    bool interacting = false;   // a camera drag or a slider drag is active
+};
+
+struct AppState {
+    GLFWwindow* window = nullptr;
+    std::unique_ptr<GlfwContext> context;
+    ui::Editor editor;
+    ui::UiState ui;
+    std::unique_ptr<Viewport> viewport;
+    std::unique_ptr<Thumbnails> thumbnails;
+    SnapshotExport snapshot;
+    FileState files;
+    ViewRequest view;
+    std::optional<ui::ScriptRunner> script;
+    bool scripted = false;  // scripts and screenshot runs: no prompts, no autosave
+    std::optional<std::filesystem::path> screenshot;  // to save at the end of this frame
+    bool quit = false;
+    int exitCode = 0;
+    float frameSeconds = 0;
+};
+
+}  // namespace sdfwb::app::gui

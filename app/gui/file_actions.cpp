@@ -1,0 +1,228 @@
+#include "app/gui/file_actions.h"
+
+#include <algorithm>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "scene/scene_json.h"
+#include "ui/user_paths.h"
+
+namespace sdfwb::app::gui {
+
+namespace fs = std::filesystem;
+
+std::string openScene(AppState& app, const fs::path& path) {
+    try {
+        app.editor.reset(scene::loadSceneFile(path));
+        app.files.current = path;
+        ui::rememberRecentFile(path.string());
+        app.ui.info("opened " + path.string());
+        return "";
+    } catch (const scene::SceneError& error) {
+        for (const std::string& problem : error.problems()) app.ui.error(problem);
+        return error.problems().empty() ? error.what() : error.problems().front();
+    }
+}
+
+std::string saveScene(AppState& app, const fs::path& path) {
+    try {
+        scene::saveSceneFile(app.editor.scene(), path);
+    } catch (const std::exception& error) {
+        app.ui.error(error.what());
+        return error.what();
+    }
+    app.editor.markSaved();
+    app.files.current = path;
+    ui::rememberRecentFile(path.string());
+    removeAutosave();
+    app.ui.info("saved " + path.string());
+    return "";
+}
+
+namespace {
+
+void perform(AppState& app, const PendingAction& action) {
+    switch (action.kind) {
+    case PendingAction::Kind::New:
+        app.editor.reset(scene::Scene{});
+        app.files.current.clear();
+        break;
+    case PendingAction::Kind::Open:
+        openScene(app, action.path);
+        break;
+    case PendingAction::Kind::Quit:
+        app.quit = true;
+        break;
+    case PendingAction::Kind::None:
+        break;
+    }
+}
+
+}  // namespace
+
+void request(AppState& app, PendingAction action) {
+    if (!app.editor.dirty() || app.scripted) {
+        perform(app, action);
+        return;
+    }
+    app.files.pending = std::move(action);
+    app.files.askUnsaved = true;
+}
+
+void openDialog(AppState& app, FileDialogState::Purpose purpose) {
+    FileDialogState& dialog = app.files.dialog;
+    dialog.purpose = purpose;
+    fs::path start = app.files.current.empty() ? fs::current_path() : fs::absolute(app.files.current).parent_path();
+    dialog.directory = start.string();
+    dialog.path = app.files.current.empty() ? (start / "scene.json").string() : fs::absolute(app.files.current).string();
+}
+
+void saveOrAsk(AppState& app) {
+    if (app.files.current.empty()) {
+        openDialog(app, FileDialogState::Purpose::SaveAs);
+    } else {
+        saveScene(app, app.files.current);
+    }
+}
+
+namespace {
+
+void drawFileBrowser(AppState& app) {
+    FileDialogState& dialog = app.files.dialog;
+    const char* title = dialog.purpose == FileDialogState::Purpose::Open ? "Open scene" : "Save scene as";
+    if (dialog.purpose != FileDialogState::Purpose::None && !ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+    ImGui::SetNextWindowSize(ImVec2(620, 420), ImGuiCond_Appearing);
+    if (!ImGui::BeginPopupModal(title)) return;
+    ImGui::TextDisabled("%s", dialog.directory.c_str());
+    ImGui::BeginChild("entries", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 2.2f), true);
+    std::error_code error;
+    fs::path directory(dialog.directory);
+    if (ImGui::Selectable("..")) dialog.directory = directory.parent_path().string();
+    std::vector<fs::directory_entry> entries;
+    for (const auto& entry : fs::directory_iterator(directory, error)) {
+        if (entry.is_directory() || entry.path().extension() == ".json") entries.push_back(entry);
+    }
+    std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+        return std::pair(!a.is_directory(), a.path().filename()) < std::pair(!b.is_directory(), b.path().filename());
+    });
+    for (const auto& entry : entries) {
+        std::string name = entry.path().filename().string() + (entry.is_directory() ? "/" : "");
+        if (ImGui::Selectable(name.c_str(), dialog.path == entry.path().string())) {
+            if (entry.is_directory()) {
+                dialog.directory = entry.path().string();
+            } else {
+                dialog.path = entry.path().string();
+            }
+        }
+    }
+    ImGui::EndChild();
+    ImGui::SetNextItemWidth(-1);
+    bool enter = ImGui::InputText("##path", &dialog.path, ImGuiInputTextFlags_EnterReturnsTrue);
+    bool accept = ImGui::Button(dialog.purpose == FileDialogState::Purpose::Open ? "Open" : "Save") || enter;
+    ImGui::SameLine();
+    bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    if (accept) {
+        if (dialog.purpose == FileDialogState::Purpose::Open) {
+            request(app, {PendingAction::Kind::Open, dialog.path});
+        } else {
+            saveScene(app, dialog.path);
+        }
+    }
+    if (accept || cancel) {
+        dialog.purpose = FileDialogState::Purpose::None;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void drawUnsavedPrompt(AppState& app) {
+    if (app.files.askUnsaved && !ImGui::IsPopupOpen("Unsaved changes")) ImGui::OpenPopup("Unsaved changes");
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("The scene has unsaved changes. Save them first?");
+    bool close = false;
+    if (ImGui::Button("Save")) {
+        if (app.files.current.empty()) {
+            openDialog(app, FileDialogState::Purpose::SaveAs);
+            app.files.pending = {};
+        } else if (saveScene(app, app.files.current).empty()) {
+            perform(app, app.files.pending);
+        }
+        close = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes")) {
+        perform(app, app.files.pending);
+        close = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) close = true;
+    if (close) {
+        app.files.askUnsaved = false;
+        app.files.pending = {};
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void drawRestorePrompt(AppState& app) {
+    if (app.files.offerRestore && !ImGui::IsPopupOpen("Restore unsaved work?")) ImGui::OpenPopup("Restore unsaved work?");
+    if (!ImGui::BeginPopupModal("Restore unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("A previous session ended with unsaved changes.\nRestore them from %s?", autosavePath().c_str());
+    bool close = false;
+    if (ImGui::Button("Restore")) {
+        try {
+            app.editor.reset(scene::loadSceneFile(autosavePath()));
+            app.editor.apply("Restore", [](scene::Scene&) {});  // restored work is unsaved work
+            app.files.current.clear();
+        } catch (const scene::SceneError& error) {
+            app.ui.error(error.what());
+        }
+        close = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+        removeAutosave();
+        close = true;
+    }
+    if (close) {
+        app.files.offerRestore = false;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace
+
+void drawFileDialogs(AppState& app) {
+    drawFileBrowser(app);
+    drawUnsavedPrompt(app);
+    drawRestorePrompt(app);
+}
+
+fs::path autosavePath() { return ui::stateDirectory() / "autosave.json"; }
+
+void autosaveTick(AppState& app, double now) {
+    constexpr double kInterval = 60.0;
+    if (app.scripted || now - app.files.lastAutosave < kInterval) return;
+    app.files.lastAutosave = now;
+    if (!app.editor.dirty()) return;
+    try {
+        fs::create_directories(autosavePath().parent_path());
+        scene::saveSceneFile(app.editor.scene(), autosavePath());
+    } catch (const std::exception& error) {
+        app.ui.error(std::string("autosave failed: ") + error.what());
+    }
+}
+
+void removeAutosave() {
+    std::error_code error;
+    fs::remove(autosavePath(), error);
+}
+
+std::string windowTitle(const AppState& app) {
+    std::string name = app.files.current.empty() ? "untitled" : app.files.current.filename().string();
+    return "SDF Workbench - " + name + (app.editor.dirty() ? " *" : "");
+}
+
+}  // namespace sdfwb::app::gui

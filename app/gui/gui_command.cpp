@@ -1,0 +1,224 @@
+#include "app/gui/gui_command.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "glcontext/gl_functions.h"
+#define GLFW_INCLUDE_NONE  // GL/gl.h would hide glcorearb.h's GL 1.x typedefs
+#include <GLFW/glfw3.h>
+
+#include "app/gui/app_state.h"
+#include "app/gui/file_actions.h"
+#include "app/gui/main_window.h"
+#include "app/gui/window_capture.h"
+#include "app/scene_source.h"
+#include "io/atomic_file.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb::app::gui {
+
+CLI::App* addGuiCommand(CLI::App& app, GuiArguments& arguments) {
+    CLI::App* gui = app.add_subcommand("gui", "Open the workbench window (needs a display)");
+    gui->add_option("scene", arguments.scene, "Scene file to open (default: the embedded default scene)");
+    gui->add_option("--script", arguments.script, "Run a script of GUI commands (docs/gui-script.md)");
+    gui->add_option("--screenshot", arguments.screenshot, "Save the window to this PNG after --frames frames, then quit");
+    gui->add_option("--frames", arguments.frames, "Frames to draw before --screenshot (it also waits until idle)")
+        ->check(CLI::NonNegativeNumber);
+    return gui;
+}
+
+bool displayAvailable() {
+    auto set = [](const char* name) {
+        const char* value = std::getenv(name);
+        return value && *value;
+    };
+    return set("DISPLAY") || set("WAYLAND_DISPLAY");
+}
+
+namespace {
+
+class Host final : public ui::ScriptHost {
+public:
+    explicit Host(AppState& app) : app_(app) {}
+    bool idle() const override {
+        return app_.viewport->idle() && (!app_.ui.showThumbnails || app_.thumbnails->idle()) && !app_.snapshot.running();
+    }
+    std::string requestScreenshot(const std::filesystem::path& path) override {
+        app_.screenshot = path;
+        return "";
+    }
+    std::string save(const std::filesystem::path& path) override { return saveScene(app_, path); }
+    std::string open(const std::filesystem::path& path) override { return openScene(app_, path); }
+    void quit() override { app_.quit = true; }
+
+private:
+    AppState& app_;
+};
+
+std::string glfwErrorText;
+
+void setUpStyle(float scale) {
+    ImGui::StyleColorsDark();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.WindowRounding = 0;
+    style.FrameRounding = 3;
+    style.GrabRounding = 3;
+    style.WindowBorderSize = 1;
+    style.ItemSpacing = ImVec2(6, 5);
+    style.ScaleAllSizes(scale);
+    ImFontConfig font;
+    font.SizePixels = 14.0f * scale;
+    ImGui::GetIO().Fonts->AddFontDefault(&font);
+}
+
+void runFrame(AppState& app, Host& host) {
+    double start = glfwGetTime();
+    bool busy = !host.idle() || app.script || app.snapshot.running();
+    if (busy) {
+        glfwPollEvents();
+    } else {
+        glfwWaitEventsTimeout(0.25);  // idle: no need to spin
+    }
+    if (glfwWindowShouldClose(app.window)) {
+        glfwSetWindowShouldClose(app.window, GLFW_FALSE);
+        request(app, {PendingAction::Kind::Quit, {}});
+    }
+    if (app.script) {
+        ui::ScriptStatus status = app.script->step(app.editor, app.ui, host);
+        if (status == ui::ScriptStatus::Failed) {
+            std::cerr << "sdf-workbench gui: " << app.script->error() << "\n";
+            app.ui.error(app.script->error());
+            app.exitCode = 1;
+            app.quit = true;
+        } else if (status == ui::ScriptStatus::Finished) {
+            app.script.reset();
+        }
+    }
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    handleShortcuts(app);
+    drawMainWindow(app);
+    app.viewport->update(app.editor.scene(), app.editor.revision(), app.ui, app.view.width, app.view.height,
+                         app.view.interacting, 0.012);
+    app.thumbnails->update(app.view.interacting || app.ui.draggingNode);
+    app.snapshot.poll();
+    if (std::string outcome = app.snapshot.takeOutcome(); !outcome.empty()) {
+        (outcome.starts_with("wrote") ? app.ui.info(outcome) : app.ui.error(outcome));
+    }
+    autosaveTick(app, start);
+    glfwSetWindowTitle(app.window, windowTitle(app).c_str());
+    ImGui::Render();
+
+    const glcontext::GlFunctions& gl = app.context->gl();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(app.window, &width, &height);
+    gl.Viewport(0, 0, width, height);
+    gl.ClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (app.screenshot) {
+        try {
+            captureWindow(gl, width, height, *app.screenshot);
+            app.ui.info("screenshot " + app.screenshot->string());
+        } catch (const std::exception& error) {
+            std::cerr << "sdf-workbench gui: " << error.what() << "\n";
+            app.ui.error(error.what());
+            app.exitCode = 1;
+            app.quit = true;
+        }
+        app.screenshot.reset();
+    }
+    glfwSwapBuffers(app.window);
+    app.frameSeconds = static_cast<float>(glfwGetTime() - start);
+}
+
+}  // namespace
+
+int runGui(const GuiArguments& arguments) {
+    // Everything that can fail without a window is checked first.
+    scene::Scene scene;
+    std::optional<ui::ScriptRunner> script;
+    try {
+        scene = loadSceneArgument(arguments.scene);
+        if (!arguments.script.empty()) {
+            script.emplace(ui::parseScript(io::readTextFile(arguments.script), arguments.script), arguments.script);
+        } else if (!arguments.screenshot.empty()) {
+            script.emplace(ui::parseScript(ui::screenshotScript(arguments.screenshot, arguments.frames), "--screenshot"),
+                           "--screenshot");
+        }
+    } catch (const scene::SceneError& error) {
+        for (const std::string& problem : error.problems()) std::cerr << "sdf-workbench gui: " << problem << "\n";
+        return 1;
+    } catch (const std::exception& error) {
+        std::cerr << "sdf-workbench gui: " << error.what() << "\n";
+        return 1;
+    }
+
+    glfwSetErrorCallback([](int, const char* text) { glfwErrorText = text; });
+    if (!glfwInit()) {
+        std::cerr << "sdf-workbench gui: cannot open a window: " << glfwErrorText << "\n";
+        return kNoWindow;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(arguments.width, arguments.height, "SDF Workbench", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "sdf-workbench gui: cannot open an OpenGL 3.3 window: " << glfwErrorText << "\n";
+        glfwTerminate();
+        return kNoWindow;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(script ? 0 : 1);
+
+    int exitCode = 0;
+    {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write nothing to the working directory
+        float scaleX = 1, scaleY = 1;
+        glfwGetWindowContentScale(window, &scaleX, &scaleY);
+        setUpStyle(std::max(1.0f, scaleY));
+        ImGui_ImplGlfw_InitForOpenGL(window, true);
+        ImGui_ImplOpenGL3_Init("#version 330 core");
+
+        AppState app;
+        app.window = window;
+        try {
+            app.context = GlfwContext::forWindow(window);
+            app.viewport = std::make_unique<Viewport>(*app.context);
+            app.thumbnails = std::make_unique<Thumbnails>(app.context->gl());
+        } catch (const std::exception& error) {
+            std::cerr << "sdf-workbench gui: " << error.what() << "\n";
+            return 1;
+        }
+        app.editor.reset(std::move(scene));
+        if (!arguments.scene.empty() && arguments.scene != "default") app.files.current = arguments.scene;
+        app.script = std::move(script);
+        app.scripted = app.script.has_value();
+        app.files.offerRestore = !app.scripted && std::filesystem::exists(autosavePath());
+        Host host(app);
+        while (!app.quit) runFrame(app, host);
+        if (!app.scripted) removeAutosave();
+        exitCode = app.exitCode;
+        app.viewport.reset();
+        app.thumbnails.reset();
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return exitCode;
+}
+
+}  // namespace sdfwb::app::gui

@@ -1,0 +1,277 @@
+#include "app/gui/main_window.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/gui/file_actions.h"
+#include "app/gui/viewport_panel.h"
+#include "ui/panels.h"
+#include "ui/user_paths.h"
+
+namespace sdfwb::app::gui {
+namespace {
+
+constexpr float kLeftWidth = 300.0f;
+constexpr float kRightWidth = 360.0f;
+constexpr ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+
+void undo(AppState& app) {
+    if (!app.editor.undo()) app.ui.info("nothing to undo");
+}
+void redo(AppState& app) {
+    if (!app.editor.redo()) app.ui.info("nothing to redo");
+}
+void duplicateSelection(AppState& app) {
+    if (app.editor.selection()) ui::reportProblems(app.ui, app.editor.duplicate(*app.editor.selection()));
+}
+void deleteSelection(AppState& app) {
+    if (app.editor.selection()) ui::reportProblems(app.ui, app.editor.remove(*app.editor.selection()));
+}
+
+void menuBar(AppState& app) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("New", "Ctrl+N")) request(app, {PendingAction::Kind::New, {}});
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) openDialog(app, FileDialogState::Purpose::Open);
+        if (ImGui::BeginMenu("Open recent")) {
+            for (const std::string& file : ui::loadRecentFiles()) {
+                if (ImGui::MenuItem(file.c_str())) request(app, {PendingAction::Kind::Open, file});
+            }
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save", "Ctrl+S")) saveOrAsk(app);
+        if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) openDialog(app, FileDialogState::Purpose::SaveAs);
+        ImGui::Separator();
+        if (ImGui::MenuItem("Export snapshot...", "Ctrl+E")) app.snapshot.dialogOpen = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) request(app, {PendingAction::Kind::Quit, {}});
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        std::string undoLabel = "Undo " + std::string(app.editor.undoLabel());
+        std::string redoLabel = "Redo " + std::string(app.editor.redoLabel());
+        if (ImGui::MenuItem(undoLabel.c_str(), "Ctrl+Z", false, app.editor.canUndo())) undo(app);
+        if (ImGui::MenuItem(redoLabel.c_str(), "Ctrl+Shift+Z / Ctrl+Y", false, app.editor.canRedo())) redo(app);
+        ImGui::Separator();
+        bool selected = app.editor.selection().has_value();
+        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, selected)) duplicateSelection(app);
+        if (ImGui::MenuItem("Delete", "Del", false, selected)) deleteSelection(app);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Add")) {
+        ui::drawAddMenuItems(app.editor, app.ui);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Wrap")) {
+        ui::drawWrapMenuItems(app.editor, app.ui);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("GLSL backend", "Ctrl+1", app.ui.backend == ui::ViewBackend::Gl)) app.ui.backend = ui::ViewBackend::Gl;
+        if (ImGui::MenuItem("CPU backend", "Ctrl+2", app.ui.backend == ui::ViewBackend::Cpu)) app.ui.backend = ui::ViewBackend::Cpu;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Compare side by side", nullptr, app.ui.compare == ui::CompareMode::SideBySide)) {
+            app.ui.compare = app.ui.compare == ui::CompareMode::SideBySide ? ui::CompareMode::Off : ui::CompareMode::SideBySide;
+        }
+        if (ImGui::MenuItem("Compare as difference", nullptr, app.ui.compare == ui::CompareMode::Difference)) {
+            app.ui.compare = app.ui.compare == ui::CompareMode::Difference ? ui::CompareMode::Off : ui::CompareMode::Difference;
+        }
+        ImGui::MenuItem("Step heat view", "H", &app.ui.stepHeat);
+        ImGui::MenuItem("Statistics overlay", nullptr, &app.ui.showStats);
+        ImGui::MenuItem("Node thumbnails", nullptr, &app.ui.showThumbnails);
+        ImGui::Separator();
+        if (ImGui::MenuItem("Frame all", "F")) frameAll(app);
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void leftColumn(AppState& app, ImVec2 origin, float height) {
+    ImGui::SetNextWindowPos(origin);
+    ImGui::SetNextWindowSize(ImVec2(kLeftWidth, height));
+    if (ImGui::Begin("Scene", nullptr, kPanelFlags)) {
+        if (ImGui::Button("Add")) ImGui::OpenPopup("add");
+        ImGui::SameLine();
+        if (ImGui::Button("Wrap")) ImGui::OpenPopup("wrap");
+        ImGui::SameLine();
+        if (ImGui::Button("Duplicate")) duplicateSelection(app);
+        ImGui::SameLine();
+        if (ImGui::Button("Delete")) deleteSelection(app);
+        if (ImGui::BeginPopup("add")) {
+            ui::drawAddMenuItems(app.editor, app.ui);
+            ImGui::EndPopup();
+        }
+        if (ImGui::BeginPopup("wrap")) {
+            ui::drawWrapMenuItems(app.editor, app.ui);
+            ImGui::EndPopup();
+        }
+        float libraryHeight = 150.0f;
+        ImGui::BeginChild("tree", ImVec2(0, -libraryHeight), true);
+        ui::ThumbnailLookup thumbnails;
+        if (app.ui.showThumbnails) {
+            thumbnails = [&app](const ui::NodePath& path, const scene::Node& node) -> ImTextureID {
+                return app.thumbnails->lookup(app.editor.scene(), app.editor.revision(), path, node);
+            };
+        }
+        ui::drawSceneTree(app.editor, app.ui, thumbnails);
+        ImGui::EndChild();
+        ImGui::TextDisabled("Primitive library");
+        ImGui::BeginChild("library", ImVec2(0, 0), true);
+        ui::drawLibraryPanel(app.editor, app.ui);
+        ImGui::EndChild();
+    }
+    ImGui::End();
+}
+
+void rightColumn(AppState& app, ImVec2 origin, float height) {
+    ImGui::SetNextWindowPos(origin);
+    ImGui::SetNextWindowSize(ImVec2(kRightWidth, height));
+    if (ImGui::Begin("Inspector", nullptr, kPanelFlags)) {
+        if (ImGui::BeginTabBar("tabs")) {
+            if (ImGui::BeginTabItem("Node")) {
+                ui::drawInspector(app.editor, app.ui);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Materials")) {
+                ui::drawMaterialsPanel(app.editor, app.ui);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Lights")) {
+                ui::drawLightsPanel(app.editor, app.ui);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Render")) {
+                ui::drawRenderSettingsPanel(app.editor, app.ui);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Environment")) {
+                ui::drawEnvironmentPanel(app.editor, app.ui);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+    }
+    ImGui::End();
+}
+
+void statusBar(AppState& app, ImVec2 origin, float width, float height) {
+    ImGui::SetNextWindowPos(origin);
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    if (ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration)) {
+        if (!app.ui.messages.empty()) {
+            const ui::Message& last = app.ui.messages.back();
+            bool error = last.level == ui::Message::Level::Error;
+            ImGui::TextColored(error ? ImVec4(1, 0.45f, 0.4f, 1) : ImVec4(0.75f, 0.8f, 0.85f, 1), "%s",
+                               last.text.c_str());
+            if (ImGui::IsItemHovered() && app.ui.messages.size() > 1) {
+                ImGui::BeginTooltip();
+                size_t first = app.ui.messages.size() > 12 ? app.ui.messages.size() - 12 : 0;
+                for (size_t i = first; i < app.ui.messages.size(); ++i) ImGui::TextUnformatted(app.ui.messages[i].text.c_str());
+                ImGui::EndTooltip();
+            }
+        } else {
+            ImGui::TextDisabled("Drag in the viewport to orbit, right-drag to pan, wheel to zoom.");
+        }
+        ImGui::SameLine(width - 330);
+        ImGui::TextDisabled("%s", app.viewport->stats().status.c_str());
+    }
+    ImGui::End();
+}
+
+void snapshotDialog(AppState& app) {
+    SnapshotExport& snapshot = app.snapshot;
+    if (snapshot.dialogOpen && !ImGui::IsPopupOpen("Export snapshot")) {
+        snapshot.settings.width = app.editor.scene().render.width;
+        snapshot.settings.height = app.editor.scene().render.height;
+        snapshot.settings.aa = app.editor.scene().render.aa;
+        ImGui::OpenPopup("Export snapshot");
+    }
+    if (!ImGui::BeginPopupModal("Export snapshot", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    SnapshotSettings& s = snapshot.settings;
+    ImGui::BeginDisabled(snapshot.running());
+    ImGui::SetNextItemWidth(360);
+    ImGui::InputText("file (.png or .exr)", &s.path);
+    ImGui::SetNextItemWidth(200);
+    ImGui::InputInt2("size", &s.width);
+    ImGui::SetNextItemWidth(200);
+    ImGui::SliderInt("AA", &s.aa, 1, 8);
+    ImGui::RadioButton("CPU", reinterpret_cast<int*>(&s.gl), 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("GLSL", reinterpret_cast<int*>(&s.gl), 1);
+    ImGui::EndDisabled();
+    s.width = std::clamp(s.width, 1, 16384);
+    s.height = std::clamp(s.height, 1, 16384);
+    if (snapshot.running()) {
+        ImGui::ProgressBar(static_cast<float>(snapshot.progress()), ImVec2(360, 0));
+        if (ImGui::Button("Cancel")) snapshot.cancel();
+    } else {
+        if (ImGui::Button("Export")) {
+            std::unique_ptr<glcontext::GlContext> shared;
+            if (s.gl) shared = app.context->createShared();
+            snapshot.start(app.editor.scene(), s, std::move(shared));
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Close")) {
+            snapshot.dialogOpen = false;
+            ImGui::CloseCurrentPopup();
+        }
+    }
+    ImGui::EndPopup();
+}
+
+// Pressed this frame. ImGui 1.86's GLFW backend indexes its key states by
+// GLFW key codes, so every letter is reachable this way.
+bool pressed(int key) {
+    static_assert(GLFW_KEY_LAST < 512);
+    return ImGui::IsKeyPressed(key, false);
+}
+
+}  // namespace
+
+void handleShortcuts(AppState& app) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return;  // Ctrl+Z in a text field is the field's own undo
+    bool ctrl = io.KeyCtrl, shift = io.KeyShift;
+    if (ctrl && pressed(GLFW_KEY_Z)) shift ? redo(app) : undo(app);
+    if (ctrl && pressed(GLFW_KEY_Y)) redo(app);
+    if (ctrl && pressed(GLFW_KEY_S)) shift ? openDialog(app, FileDialogState::Purpose::SaveAs) : saveOrAsk(app);
+    if (ctrl && pressed(GLFW_KEY_O)) openDialog(app, FileDialogState::Purpose::Open);
+    if (ctrl && pressed(GLFW_KEY_N)) request(app, {PendingAction::Kind::New, {}});
+    if (ctrl && pressed(GLFW_KEY_Q)) request(app, {PendingAction::Kind::Quit, {}});
+    if (ctrl && pressed(GLFW_KEY_E)) app.snapshot.dialogOpen = true;
+    if (ctrl && pressed(GLFW_KEY_D)) duplicateSelection(app);
+    if (ctrl && pressed(GLFW_KEY_1)) app.ui.backend = ui::ViewBackend::Gl;
+    if (ctrl && pressed(GLFW_KEY_2)) app.ui.backend = ui::ViewBackend::Cpu;
+    if (!ctrl && pressed(GLFW_KEY_DELETE)) deleteSelection(app);
+    if (!ctrl && pressed(GLFW_KEY_F)) frameAll(app);
+    if (!ctrl && pressed(GLFW_KEY_H)) app.ui.stepHeat = !app.ui.stepHeat;
+}
+
+void drawMainWindow(AppState& app) {
+    menuBar(app);
+    const ImGuiViewport* screen = ImGui::GetMainViewport();
+    float menuHeight = ImGui::GetFrameHeight();
+    float statusHeight = ImGui::GetFrameHeight() + 8;
+    ImVec2 origin(screen->WorkPos.x, screen->Pos.y + menuHeight);
+    float height = screen->Size.y - menuHeight - statusHeight;
+    float width = screen->Size.x;
+    leftColumn(app, origin, height);
+    rightColumn(app, ImVec2(origin.x + width - kRightWidth, origin.y), height);
+    ImGui::SetNextWindowPos(ImVec2(origin.x + kLeftWidth, origin.y));
+    ImGui::SetNextWindowSize(ImVec2(width - kLeftWidth - kRightWidth, height));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+    if (ImGui::Begin("Viewport", nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+        drawViewportPanel(app);
+    }
+    ImGui::End();
+    ImGui::PopStyleVar();
+    statusBar(app, ImVec2(origin.x, origin.y + height), width, statusHeight);
+    snapshotDialog(app);
+    drawFileDialogs(app);
+}
+
+}  // namespace sdfwb::app::gui

@@ -1,0 +1,16 @@
+#pragma once
+// The window's layout at any size (1280x800 is the design size): menu bar,
+// scene tree and library on the left, viewport in the middle, inspector tabs
+// (node, materials, lights, render, environment) on the right, status bar.
+
+#include "app/gui/app_state.h"
+
+namespace sdfwb::app::gui {
+
+void drawMainWindow(AppState& app);
+
+// Keyboard shortcuts (read through GLFW key codes, since ImGui 1.86 names
+// only a few letters); ignored while a text field has focus.
+void handleShortcuts(AppState& app);
+
+}  // namespace sdfwb::app::gui

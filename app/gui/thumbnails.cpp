@@ -1,0 +1,54 @@
+#include "app/gui/thumbnails.h"
+
+#include <functional>
+
+#include "app/gui/camera_framing.h"
+#include "program/compile_scene.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb::app::gui {
+
+Thumbnails::Thumbnails(const glcontext::GlFunctions& gl) : gl_(gl) {}
+
+void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, const ui::NodePath& path,
+                         const scene::Node& node) {
+    if (revision != revision_) {
+        revision_ = revision;
+        keys_.clear();
+        // renders for the previous state are stale: requested again if still shown
+        jobs_.cancelAll();
+        requested_.clear();
+        nlohmann::ordered_json look = scene::sceneToJson(scene);
+        look.erase("root");
+        look.erase("camera");
+        look.erase("name");
+        look.erase("description");
+        lookHash_ = std::hash<std::string>{}(look.dump());
+    }
+    auto known = keys_.find(path);
+    std::uint64_t key = known != keys_.end()
+                            ? known->second
+                            : (keys_[path] = std::hash<std::string>{}(scene::nodeToJson(node).dump()) ^ (lookHash_ * 31));
+    if (auto texture = textures_.find(key); texture != textures_.end()) return texture->second->id();
+    if (requested_.insert(key).second) {
+        scene::Scene alone = scene;
+        alone.root = node;
+        alone.environment.ground.enabled = false;
+        alone.camera = framedCamera(scene.camera, node);
+        alone.render.aa = 1;
+        program::CompileOptions options{kSize, kSize, 1};
+        jobs_.submit({key, program::compileScene(alone, options)}, false);
+    }
+    return nullptr;
+}
+
+void Thumbnails::update(bool paused) {
+    jobs_.setPaused(paused);
+    for (CpuResult& result : jobs_.takeResults()) {
+        auto texture = std::make_unique<DisplayTexture>(gl_);
+        texture->upload(result.frame.color);
+        textures_[result.tag] = std::move(texture);
+    }
+}
+
+}  // namespace sdfwb::app::gui

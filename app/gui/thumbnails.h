@@ -1,0 +1,44 @@
+#pragma once
+// Small renders of each tree node's subtree, as the thesis's node editor gave
+// every node its own canvas. Rendered by the CPU backend on a worker thread
+// (a thumbnail is too small to pay for a shader compile per subtree), cached
+// by a hash of the subtree and of what lights it, paused while the user drags.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "app/gui/cpu_jobs.h"
+#include "app/gui/display_texture.h"
+#include "scene/scene.h"
+#include "ui/node_path.h"
+
+namespace sdfwb::app::gui {
+
+class Thumbnails {
+public:
+    static constexpr int kSize = 48;  // pixels per side
+
+    explicit Thumbnails(const glcontext::GlFunctions& gl);
+
+    // The subtree's texture (null until rendered); queues a render when missing.
+    // `revision` identifies the scene state (the hashes are kept per revision).
+    void* lookup(const scene::Scene& scene, std::uint64_t revision, const ui::NodePath& path,
+                 const scene::Node& node);
+    // Uploads finished renders; queued renders wait while `paused`.
+    void update(bool paused);
+    // No thumbnail render is queued or running.
+    bool idle() const { return !jobs_.busy(); }
+
+private:
+    const glcontext::GlFunctions& gl_;
+    CpuJobQueue jobs_{1};
+    std::map<std::uint64_t, std::unique_ptr<DisplayTexture>> textures_;
+    std::set<std::uint64_t> requested_;
+    std::uint64_t revision_ = 0;
+    std::uint64_t lookHash_ = 0;  // materials, lights, environment
+    std::map<ui::NodePath, std::uint64_t> keys_;
+};
+
+}  // namespace sdfwb::app::gui

@@ -1,0 +1,149 @@
+#include "app/gui/viewport_panel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "app/gui/camera_framing.h"
+#include "scene/camera_frame.h"
+
+namespace sdfwb::app::gui {
+namespace {
+
+// Orbit with the left button, pan the target with the right or middle
+// button, distance with the wheel; each drag is one undo step.
+bool cameraControls(AppState& app, ImVec2 size) {
+    ImGui::InvisibleButton("camera", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const ImGuiIO& io = ImGui::GetIO();
+    bool active = ImGui::IsItemActive();
+    if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+        ImVec2 d = io.MouseDelta;
+        bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+        app.editor.apply(pan ? "Pan camera" : "Orbit camera", [&](scene::Scene& s) {
+            scene::Camera& c = s.camera;
+            if (pan) {
+                scene::CameraFrame frame = scene::cameraFrame(c);
+                double perPixel = 2.0 * c.distance * frame.tanHalfFov / std::max(1.0f, size.y);
+                c.target += (-d.x * perPixel) * frame.right + (d.y * perPixel) * frame.up;
+            } else {
+                c.azimuth = std::remainder(c.azimuth - 0.4 * d.x, 360.0);
+                c.elevation = std::clamp(c.elevation + 0.4 * d.y, -89.0, 89.0);
+            }
+        }, "camera drag");
+    }
+    if (ImGui::IsItemDeactivated()) app.editor.endMerge();
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
+        app.editor.apply("Zoom camera", [&](scene::Scene& s) {
+            s.camera.distance = std::max(1e-3, s.camera.distance * std::pow(0.9, io.MouseWheel));
+        }, "camera zoom");
+    }
+    return active;
+}
+
+void toolbar(AppState& app) {
+    ui::UiState& ui = app.ui;
+    ImGui::TextUnformatted("Backend");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("GLSL", ui.backend == ui::ViewBackend::Gl)) ui.backend = ui::ViewBackend::Gl;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("CPU", ui.backend == ui::ViewBackend::Cpu)) ui.backend = ui::ViewBackend::Cpu;
+    ImGui::SameLine(0, 20);
+    ImGui::SetNextItemWidth(130);
+    const char* modes[] = {"no compare", "side by side", "difference"};
+    int mode = static_cast<int>(ui.compare);
+    if (ImGui::Combo("##compare", &mode, modes, 3)) ui.compare = static_cast<ui::CompareMode>(mode);
+    ImGui::SameLine(0, 20);
+    ImGui::Checkbox("step heat", &ui.stepHeat);
+    ImGui::SameLine();
+    ImGui::Checkbox("stats", &ui.showStats);
+    ImGui::SameLine(0, 20);
+    if (ImGui::Button("Frame all (F)")) frameAll(app);
+    ImGui::SameLine();
+    if (ImGui::Button("Snapshot...")) app.snapshot.dialogOpen = true;
+}
+
+void statsOverlay(AppState& app, ImVec2 corner) {
+    const Viewport& viewport = *app.viewport;
+    const ViewportStats& s = viewport.stats();
+    ImGui::SetNextWindowPos(ImVec2(corner.x + 8, corner.y + 8));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                             ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing |
+                             ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoSavedSettings;
+    if (ImGui::Begin("##stats", nullptr, flags)) {
+        bool gl = app.ui.backend == ui::ViewBackend::Gl || app.ui.compare != ui::CompareMode::Off;
+        ImGui::Text("frame %.1f ms   backend %s", app.frameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
+        ImGui::Text("image %d x %d, AA %d, %.0f ms", s.width, s.height, s.aa, s.renderSeconds * 1000.0);
+        ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
+                    s.frame.hitRatio * 100.0);
+        ImGui::Text("GL %s", viewport.glInfo().renderer.c_str());
+        ImGui::Text("shaders built %d, last %.2f s", s.compiles, s.compileSeconds);
+        ImGui::Text("%s", s.status.c_str());
+    }
+    ImGui::End();
+}
+
+void comparisonLine(const AppState& app) {
+    const auto& c = app.viewport->comparison();
+    if (!c) {
+        ImGui::TextDisabled("comparing: waiting for both backends...");
+        return;
+    }
+    bool pass = image::passes(*c, image::kParityThresholds);
+    ImGui::TextColored(pass ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1),
+                       "%s  max %.0f/255  mean %.3f/255  RMSE %.3f  PSNR %.1f dB  >1/255: %.3f%%  >8/255: %.3f%%",
+                       pass ? "backends agree" : "backends differ", c->maxAbs, c->meanAbs, c->rmse, c->psnr,
+                       c->percentAbove1, c->percentAbove8);
+}
+
+}  // namespace
+
+void frameAll(AppState& app) {
+    app.editor.apply("Frame all", [](scene::Scene& s) { s.camera = framedCamera(s.camera, s.root); });
+}
+
+void drawViewportPanel(AppState& app) {
+    toolbar(app);
+    if (app.ui.compare != ui::CompareMode::Off) comparisonLine(app);
+    if (!app.viewport->error().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+        ImGui::TextWrapped("GLSL backend: %s  (the CPU backend still works)", app.viewport->error().c_str());
+        ImGui::PopStyleColor();
+    }
+    ImVec2 corner = ImGui::GetCursorScreenPos();
+    ImVec2 size = ImGui::GetContentRegionAvail();
+    size.x = std::max(size.x, 16.0f);
+    size.y = std::max(size.y, 16.0f);
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    app.view.width = static_cast<int>(size.x * scale.x);
+    app.view.height = static_cast<int>(size.y * scale.y);
+
+    const Viewport& viewport = *app.viewport;
+    switch (app.ui.compare) {
+    case ui::CompareMode::Off:
+        ImGui::Image(viewport.main().id(), size);
+        break;
+    case ui::CompareMode::SideBySide: {
+        ImVec2 half(size.x / 2, size.y);
+        ImGui::Image(viewport.main().id(), half);
+        ImGui::SameLine(0, 0);
+        ImGui::Image(viewport.second().id(), half);
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        draw->AddText(ImVec2(corner.x + 8, corner.y + size.y - 22), IM_COL32_WHITE, "GLSL");
+        draw->AddText(ImVec2(corner.x + half.x + 8, corner.y + size.y - 22), IM_COL32_WHITE, "CPU");
+        break;
+    }
+    case ui::CompareMode::Difference:
+        ImGui::Image(viewport.difference().id(), size);
+        break;
+    }
+    ImGui::SetCursorScreenPos(corner);
+    bool dragging = cameraControls(app, size);
+    app.view.interacting = dragging || (ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    if (app.ui.showStats) statsOverlay(app, corner);
+}
+
+}  // namespace sdfwb::app::gui

@@ -1,0 +1,14 @@
+#pragma once
+// The viewport panel: toolbar (backend, compare mode, heat view, statistics,
+// frame all, snapshot), the image, the orbit camera controls and the
+// statistics overlay. Records the image size and interaction in app.view.
+
+#include "app/gui/app_state.h"
+
+namespace sdfwb::app::gui {
+
+void drawViewportPanel(AppState& app);
+// Aims the camera at the whole scene (undoable).
+void frameAll(AppState& app);
+
+}  // namespace sdfwb::app::gui
