@@ -113,12 +113,28 @@ void fieldWidget(Editor& editor, UiState& ui, const NodePath& path, const FieldS
     }
 }
 
+// With no node selected: the scene's own name and description.
+void drawSceneProperties(Editor& editor, UiState& ui) {
+    ImGui::TextDisabled("Scene (select a node in the tree to edit it)");
+    std::string name = editor.scene().name;
+    if (ImGui::InputText("name", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        reportProblems(ui, editor.apply("Rename scene", [&](scene::Scene& s) { s.name = name; }));
+    }
+    std::string description = editor.scene().description;
+    ImGui::TextDisabled("description");
+    if (ImGui::InputTextMultiline("##description", &description, ImVec2(-1, 120))) {
+        reportProblems(ui, editor.apply("Edit description", [&](scene::Scene& s) { s.description = description; },
+                                        "scene description"));
+    }
+    if (ImGui::IsItemDeactivated()) editor.endMerge();
+}
+
 }  // namespace
 
 void drawInspector(Editor& editor, UiState& ui) {
     const scene::Node* node = editor.selectedNode();
     if (!node) {
-        ImGui::TextDisabled("Select a node in the scene tree.");
+        drawSceneProperties(editor, ui);
         return;
     }
     const NodePath path = *editor.selection();

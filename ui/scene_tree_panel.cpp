@@ -12,7 +12,7 @@ namespace sdfwb::ui {
 namespace {
 
 constexpr const char* kDragType = "SDFWB_NODE";
-constexpr float kThumbnailSize = 32.0f;
+constexpr float kThumbnailSize = 26.0f;
 
 struct TreeContext {
     Editor& editor;

@@ -69,10 +69,11 @@ void setUpStyle(float scale) {
     style.FrameRounding = 3;
     style.GrabRounding = 3;
     style.WindowBorderSize = 1;
-    style.ItemSpacing = ImVec2(6, 5);
+    style.ItemSpacing = ImVec2(6, 4);
+    style.IndentSpacing = 14;
     style.ScaleAllSizes(scale);
     ImFontConfig font;
-    font.SizePixels = 14.0f * scale;
+    font.SizePixels = 13.0f * scale;
     ImGui::GetIO().Fonts->AddFontDefault(&font);
 }
 

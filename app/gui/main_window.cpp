@@ -1,5 +1,7 @@
 #include "app/gui/main_window.h"
 
+#include <cmath>
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -14,8 +16,8 @@
 namespace sdfwb::app::gui {
 namespace {
 
-constexpr float kLeftWidth = 300.0f;
-constexpr float kRightWidth = 360.0f;
+constexpr float kSideWidth = 390.0f;      // the scene tree over the inspector, right of the viewport
+constexpr float kTreeFraction = 0.46f;   // of the side column's height
 constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
@@ -90,9 +92,9 @@ void menuBar(AppState& app) {
     ImGui::EndMainMenuBar();
 }
 
-void leftColumn(AppState& app, ImVec2 origin, float height) {
+void treePanel(AppState& app, ImVec2 origin, float height) {
     ImGui::SetNextWindowPos(origin);
-    ImGui::SetNextWindowSize(ImVec2(kLeftWidth, height));
+    ImGui::SetNextWindowSize(ImVec2(kSideWidth, height));
     if (ImGui::Begin("Scene", nullptr, kPanelFlags)) {
         if (ImGui::Button("Add")) ImGui::OpenPopup("add");
         ImGui::SameLine();
@@ -109,8 +111,7 @@ void leftColumn(AppState& app, ImVec2 origin, float height) {
             ui::drawWrapMenuItems(app.editor, app.ui);
             ImGui::EndPopup();
         }
-        float libraryHeight = 150.0f;
-        ImGui::BeginChild("tree", ImVec2(0, -libraryHeight), true);
+        ImGui::BeginChild("tree", ImVec2(0, 0), true);
         ui::ThumbnailLookup thumbnails;
         if (app.ui.showThumbnails) {
             thumbnails = [&app](const ui::NodePath& path, const scene::Node& node) -> ImTextureID {
@@ -119,17 +120,13 @@ void leftColumn(AppState& app, ImVec2 origin, float height) {
         }
         ui::drawSceneTree(app.editor, app.ui, thumbnails);
         ImGui::EndChild();
-        ImGui::TextDisabled("Primitive library");
-        ImGui::BeginChild("library", ImVec2(0, 0), true);
-        ui::drawLibraryPanel(app.editor, app.ui);
-        ImGui::EndChild();
     }
     ImGui::End();
 }
 
-void rightColumn(AppState& app, ImVec2 origin, float height) {
+void inspectorPanel(AppState& app, ImVec2 origin, float height) {
     ImGui::SetNextWindowPos(origin);
-    ImGui::SetNextWindowSize(ImVec2(kRightWidth, height));
+    ImGui::SetNextWindowSize(ImVec2(kSideWidth, height));
     if (ImGui::Begin("Inspector", nullptr, kPanelFlags)) {
         if (ImGui::BeginTabBar("tabs")) {
             if (ImGui::BeginTabItem("Node")) {
@@ -150,6 +147,10 @@ void rightColumn(AppState& app, ImVec2 origin, float height) {
             }
             if (ImGui::BeginTabItem("Environment")) {
                 ui::drawEnvironmentPanel(app.editor, app.ui);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Library")) {
+                ui::drawLibraryPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
             ImGui::EndTabBar();
@@ -259,10 +260,11 @@ void drawMainWindow(AppState& app) {
     ImVec2 origin(screen->WorkPos.x, screen->Pos.y + menuHeight);
     float height = screen->Size.y - menuHeight - statusHeight;
     float width = screen->Size.x;
-    leftColumn(app, origin, height);
-    rightColumn(app, ImVec2(origin.x + width - kRightWidth, origin.y), height);
-    ImGui::SetNextWindowPos(ImVec2(origin.x + kLeftWidth, origin.y));
-    ImGui::SetNextWindowSize(ImVec2(width - kLeftWidth - kRightWidth, height));
+    float treeHeight = std::floor(height * kTreeFraction);
+    treePanel(app, ImVec2(origin.x + width - kSideWidth, origin.y), treeHeight);
+    inspectorPanel(app, ImVec2(origin.x + width - kSideWidth, origin.y + treeHeight), height - treeHeight);
+    ImGui::SetNextWindowPos(origin);
+    ImGui::SetNextWindowSize(ImVec2(width - kSideWidth, height));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
     if (ImGui::Begin("Viewport", nullptr, kPanelFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
         drawViewportPanel(app);

@@ -45,22 +45,20 @@ bool cameraControls(AppState& app, ImVec2 size) {
 
 void toolbar(AppState& app) {
     ui::UiState& ui = app.ui;
-    ImGui::TextUnformatted("Backend");
-    ImGui::SameLine();
     if (ImGui::RadioButton("GLSL", ui.backend == ui::ViewBackend::Gl)) ui.backend = ui::ViewBackend::Gl;
     ImGui::SameLine();
     if (ImGui::RadioButton("CPU", ui.backend == ui::ViewBackend::Cpu)) ui.backend = ui::ViewBackend::Cpu;
-    ImGui::SameLine(0, 20);
-    ImGui::SetNextItemWidth(130);
+    ImGui::SameLine(0, 14);
+    ImGui::SetNextItemWidth(120);
     const char* modes[] = {"no compare", "side by side", "difference"};
     int mode = static_cast<int>(ui.compare);
     if (ImGui::Combo("##compare", &mode, modes, 3)) ui.compare = static_cast<ui::CompareMode>(mode);
-    ImGui::SameLine(0, 20);
+    ImGui::SameLine(0, 14);
     ImGui::Checkbox("step heat", &ui.stepHeat);
     ImGui::SameLine();
     ImGui::Checkbox("stats", &ui.showStats);
-    ImGui::SameLine(0, 20);
-    if (ImGui::Button("Frame all (F)")) frameAll(app);
+    ImGui::SameLine(0, 14);
+    if (ImGui::Button("Frame all")) frameAll(app);
     ImGui::SameLine();
     if (ImGui::Button("Snapshot...")) app.snapshot.dialogOpen = true;
 }
@@ -69,8 +67,10 @@ void statsOverlay(AppState& app, ImVec2 corner) {
     const Viewport& viewport = *app.viewport;
     const ViewportStats& s = viewport.stats();
     ImGui::SetNextWindowPos(ImVec2(corner.x + 8, corner.y + 8));
+    // a fixed width: auto-resizing would lag a frame behind changing text
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 24, 0));
     ImGui::SetNextWindowBgAlpha(0.6f);
-    ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
                              ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing |
                              ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoSavedSettings;
     if (ImGui::Begin("##stats", nullptr, flags)) {
@@ -94,8 +94,8 @@ void comparisonLine(const AppState& app) {
     }
     bool pass = image::passes(*c, image::kParityThresholds);
     ImGui::TextColored(pass ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1),
-                       "%s  max %.0f/255  mean %.3f/255  RMSE %.3f  PSNR %.1f dB  >1/255: %.3f%%  >8/255: %.3f%%",
-                       pass ? "backends agree" : "backends differ", c->maxAbs, c->meanAbs, c->rmse, c->psnr,
+                       "%s: max %.0f/255, mean %.3f/255, PSNR %.1f dB, pixels >1/255 %.3f%%, >8/255 %.3f%%",
+                       pass ? "backends agree" : "backends differ", c->maxAbs, c->meanAbs, c->psnr,
                        c->percentAbove1, c->percentAbove8);
 }
 
@@ -138,6 +138,8 @@ void drawViewportPanel(AppState& app) {
     }
     case ui::CompareMode::Difference:
         ImGui::Image(viewport.difference().id(), size);
+        ImGui::GetWindowDrawList()->AddText(ImVec2(corner.x + 8, corner.y + size.y - 22), IM_COL32_WHITE,
+                                            "|GLSL - CPU| per pixel: black equal, blue small, yellow, red 8/255 or more");
         break;
     }
     ImGui::SetCursorScreenPos(corner);
