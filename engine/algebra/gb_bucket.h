@@ -65,6 +65,16 @@ class Bucket {
     }
   }
 
+  /// Calls f on every coefficient (e.g. to compute or divide out a content).
+  template <class F>
+  void for_each_coefficient(F&& f) {
+    for (Level& level : levels_) {
+      for (std::size_t i = level.head; i < level.poly.size(); ++i) {
+        if (!f(level.poly.coeffs[i])) return;
+      }
+    }
+  }
+
   /// Removes the leading term into (mon, coeff); false when the bucket is 0.
   bool pop_lead(Word* mon, Coeff& coeff) {
     const std::size_t stride = layout_.stride();

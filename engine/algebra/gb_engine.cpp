@@ -1,6 +1,8 @@
 #include "algebra/gb_engine.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 namespace sdfwb::algebra::gb {
 
@@ -37,6 +39,8 @@ typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* sc
   const std::size_t stride = layout_.stride();
   std::vector<Word> mon(stride), shift(stride);
   Coeff c{}, scale{}, multiplier{};
+  // Bits multiplied into the polynomial since the last content removal.
+  std::size_t scaled_bits = 0;
   while (bucket_.pop_lead(mon.data(), c)) {
     int r = find_reducer(mon.data(), layout_.divmask(mon.data()));
     if (r < 0) {
@@ -49,17 +53,49 @@ typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* sc
       bucket_.scale(scale);
       for (Coeff& x : result.coeffs) domain_.mul(x, x, scale);
       if (scale_product) domain_.mul(*scale_product, *scale_product, scale);
+      if constexpr (D::has_content) scaled_bits += mpz_sizeinbase(scale.get_mpz_t(), 2);
     }
     domain_.negate(multiplier);
     layout_.divide(shift.data(), mon.data(), g.mons.data());
     if (g.size() > 1) bucket_.add_multiple(g, 1, multiplier, shift.data());
     sugar = std::max(sugar, layout_.degree(shift.data()) + g.sugar);
+    if constexpr (D::has_content) {
+      if (scaled_bits > kContentBits && !scale_product) {
+        remove_content(result);
+        scaled_bits = 0;
+      }
+    }
     ++stats_.reduction_steps;
     monitor_.tick(progress("reduction"), own_bytes());
   }
   result.sugar = sugar;
   if (!scale_product) domain_.normalize(result.coeffs);
   return result;
+}
+
+template <class D>
+void Engine<D>::remove_content(P& result) {
+  if constexpr (D::has_content) {
+    // gcd of all coefficients, stopping as soon as it reaches 1 (cheap when
+    // there is nothing to gain).
+    mpz_class g;
+    auto accumulate = [&g](const mpz_class& c) {
+      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+      return mpz_cmp_ui(g.get_mpz_t(), 1) != 0;
+    };
+    for (const Coeff& c : result.coeffs) {
+      if (!accumulate(c)) return;
+    }
+    bucket_.for_each_coefficient(accumulate);
+    if (mpz_cmp_ui(g.get_mpz_t(), 1) <= 0) return;
+    auto divide = [&g](mpz_class& c) {
+      mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+      return true;
+    };
+    for (Coeff& c : result.coeffs) divide(c);
+    bucket_.for_each_coefficient(divide);
+    ++stats_.content_removals;
+  }
 }
 
 template <class D>
@@ -84,6 +120,7 @@ void Engine<D>::push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar,
 
 template <class D>
 void Engine<D>::insert(P h) {
+  if (getenv("GBDEBUG")) { size_t mb = 0; if constexpr (D::has_content) for (auto& c : h.coeffs) mb = std::max(mb, mpz_sizeinbase(c.get_mpz_t(), 2)); fprintf(stderr, "insert terms %zu bits %zu sugar %u deg %u\n", h.size(), mb, h.sugar, layout_.degree(h.mons.data())); }
   const std::size_t stride = layout_.stride();
   const auto k = static_cast<std::uint32_t>(basis_.size());
   basis_bytes_ += h.bytes();
@@ -170,7 +207,12 @@ void Engine<D>::insert(P h) {
       kept.push_back(r);
     }
   }
-  kept.push_back(k);
+  // Keep reducers sorted by length: find_reducer returns the first match, and
+  // short reducers add fewer terms (and less coefficient growth) per step.
+  auto position = std::upper_bound(kept.begin(), kept.end(), k, [this](std::uint32_t a, std::uint32_t b) {
+    return basis_[a].poly.size() < basis_[b].poly.size();
+  });
+  kept.insert(position, k);
   reducers_ = std::move(kept);
   stats_.max_basis_size = std::max(stats_.max_basis_size, reducers_.size());
 }

@@ -57,12 +57,15 @@ class Engine {
     bool alive = true;
   };
   static constexpr std::uint32_t kGenerator = 0xffffffffu;
+  static constexpr std::size_t kContentBits = 64;
 
   const Word* lead(std::uint32_t element) const { return basis_[element].poly.mons.data(); }
   const Word* pair_lcm(const Pair& pair) const { return lcm_store_.data() + pair.lcm; }
   int find_reducer(const Word* mon, std::uint64_t mask) const;
   /// Reduces the bucket completely; `result` holds terms already final.
   P reduce(P result, std::uint32_t sugar, Coeff* scale_product = nullptr);
+  /// Divides the polynomial under reduction (result and bucket) by its content.
+  void remove_content(P& result);
   void insert(P h);
   void push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm);
   bool pair_before(std::uint32_t a, std::uint32_t b) const;

@@ -42,6 +42,9 @@ struct Poly {
 /// leading coefficient a, p becomes (a/g)*p - (c/g)*m*reducer, g = gcd(a, c).
 struct IntegerDomain {
   using Coeff = mpz_class;
+  /// Fraction-free steps make coefficients grow by common factors that the
+  /// engine divides out now and then.
+  static constexpr bool has_content = true;
 
   static bool is_zero(const Coeff& c) { return mpz_sgn(c.get_mpz_t()) == 0; }
   static bool is_one(const Coeff& c) { return mpz_cmp_ui(c.get_mpz_t(), 1) == 0; }
@@ -68,6 +71,7 @@ struct IntegerDomain {
 /// Z/p for a prime p < 2^31; results are made monic.
 struct ModularDomain {
   using Coeff = std::uint32_t;
+  static constexpr bool has_content = false;
   std::uint32_t p;
 
   static bool is_zero(Coeff c) { return c == 0; }

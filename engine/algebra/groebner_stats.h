@@ -12,6 +12,7 @@ struct GroebnerStats {
   std::size_t chain_criterion = 0;      // pairs skipped: Gebauer-Moeller chain criterion
   std::size_t reduction_steps = 0;      // single reduction steps
   std::size_t max_basis_size = 0;       // largest intermediate basis
+  std::size_t content_removals = 0;     // common factors divided out during reductions
 };
 
 }  // namespace sdfwb::algebra

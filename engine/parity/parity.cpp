@@ -1,5 +1,6 @@
 #include "parity/parity.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,7 +41,9 @@ ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer
 
     if (options.reference) {
         scene::Scene tight = scene;
-        tight.render.epsilon /= options.referenceEpsilonDivisor;
+        tight.render.epsilon /= options.referenceTightening;
+        tight.render.maxSteps = std::min(8192, static_cast<int>(tight.render.maxSteps * options.referenceTightening));
+        tight.render.shadowSteps = std::min(4096, static_cast<int>(tight.render.shadowSteps * options.referenceTightening));
         program::Program referenceProgram = program::compileScene(tight, compileOptions);
         cpu::RenderOutcome reference = cpu::renderCpu(referenceProgram, {.precision = cpu::Precision::Double});
         result.hasReference = true;

@@ -17,8 +17,10 @@ struct ParityOptions {
     int height = 180;
     int aa = 2;
     bool reference = false;  // also render the double-precision reference (hard cases)
-    // The reference's hit epsilon is the scene's divided by this.
-    double referenceEpsilonDivisor = 10.0;
+    // The reference's hit epsilon is the scene's divided by this, and its step
+    // limits are multiplied by it (up to the largest valid values), so that it
+    // converges where the scene's settings stop early.
+    double referenceTightening = 10.0;
 };
 
 struct ParityResult {

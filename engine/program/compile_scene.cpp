@@ -307,9 +307,11 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     t.maxSteps = r.maxSteps;
     t.maxDistance = r.maxDistance;
     if (r.epsilonMode == scene::EpsilonMode::Pixel) {
-        // r.epsilon pixels at distance t span epsilon * t * (2 tan(fov/2) / height)
+        // r.epsilon sub-sample footprints: at distance t one sub-sample spans
+        // t * 2 tan(fov/2) / (height * aa), so higher AA also resolves finer detail
+        // instead of averaging silhouettes dilated by a whole pixel's epsilon
         t.epsilon = 0.0;
-        t.epsilonPerDistance = r.epsilon * 2.0 * frame.tanHalfFov / program.height;
+        t.epsilonPerDistance = r.epsilon * 2.0 * frame.tanHalfFov / (program.height * program.aa);
     } else {
         t.epsilon = r.epsilon;
         t.epsilonPerDistance = 0.0;

@@ -12,10 +12,10 @@
 namespace sdfwb {
 namespace {
 
-class EveryScene : public ::testing::TestWithParam<std::filesystem::path> {};
+class EveryScene : public ::testing::TestWithParam<test::SceneFile> {};
 
 TEST_P(EveryScene, RendersFinitePixels) {
-    scene::Scene s = scene::loadSceneFile(GetParam());
+    scene::Scene s = scene::loadSceneFile(GetParam().path());
     program::Program p = program::compileScene(s, {.width = 64, .height = 36, .aa = 1});
     cpu::RenderOutcome outcome = cpu::renderCpu(p);
     ASSERT_FALSE(outcome.cancelled);
@@ -25,11 +25,7 @@ TEST_P(EveryScene, RendersFinitePixels) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::allSceneFiles()),
-                         [](const ::testing::TestParamInfo<std::filesystem::path>& info) {
-                             std::string name = std::filesystem::relative(info.param, SDFWB_SOURCE_DIR "/scenes").string();
-                             for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return name;
-                         });
+                         [](const ::testing::TestParamInfo<test::SceneFile>& info) { return info.param.testName(); });
 
 }  // namespace
 }  // namespace sdfwb

@@ -15,18 +15,15 @@
 namespace sdfwb {
 namespace {
 
-bool isHard(const std::filesystem::path& file) { return file.parent_path().filename() == "hard"; }
-
-class Parity : public test::GlTest, public ::testing::WithParamInterface<std::filesystem::path> {};
+class Parity : public test::GlTest, public ::testing::WithParamInterface<test::SceneFile> {};
 
 TEST_P(Parity, BackendsAgree) {
-    const std::filesystem::path& file = GetParam();
-    scene::Scene s = scene::loadSceneFile(file);
+    const test::SceneFile& file = GetParam();
+    scene::Scene s = scene::loadSceneFile(file.path());
     gl::GlRenderer renderer(gl());
-    parity::ParityOptions options{.width = 320, .height = 180, .aa = 2, .reference = isHard(file)};
+    parity::ParityOptions options{.width = 320, .height = 180, .aa = 2, .reference = file.isHardCase()};
     parity::ParityResult r = parity::measureParity(s, renderer, options);
-    std::cout << parity::tableHeader(options.reference)
-              << parity::tableRow(std::filesystem::relative(file, SDFWB_SOURCE_DIR).string(), r, options.reference);
+    std::cout << parity::tableHeader(options.reference) << parity::tableRow(file.relative, r, options.reference);
     EXPECT_EQ(r.cpuNonFinite, 0u);
     EXPECT_EQ(r.glNonFinite, 0u);
     if (options.reference) {
@@ -40,11 +37,7 @@ TEST_P(Parity, BackendsAgree) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Parity, ::testing::ValuesIn(test::allSceneFiles()),
-                         [](const ::testing::TestParamInfo<std::filesystem::path>& info) {
-                             std::string name = std::filesystem::relative(info.param, SDFWB_SOURCE_DIR "/scenes").string();
-                             for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return name;
-                         });
+                         [](const ::testing::TestParamInfo<test::SceneFile>& info) { return info.param.testName(); });
 
 // A scene of 1000 nodes (500 translated spheres in a union) through both backends.
 class LargeScene : public test::GlTest {};

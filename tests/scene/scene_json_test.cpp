@@ -10,8 +10,8 @@ TEST(SceneJson, EveryShippedSceneRoundTripsAndSavesByteStable) {
     auto files = test::allSceneFiles();
     ASSERT_FALSE(files.empty());
     for (const auto& file : files) {
-        SCOPED_TRACE(file.string());
-        Scene loaded = loadSceneFile(file);
+        SCOPED_TRACE(file.relative);
+        Scene loaded = loadSceneFile(file.path());
         std::string saved = serializeScene(loaded);
         Scene reloaded = parseScene(saved);
         EXPECT_EQ(loaded, reloaded);

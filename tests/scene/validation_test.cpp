@@ -25,6 +25,8 @@ struct ErrorCase {
     std::string expected;  // the first problem, exactly
 };
 
+void PrintTo(const ErrorCase& c, std::ostream* out) { *out << c.label; }
+
 class SceneValidation : public ::testing::TestWithParam<ErrorCase> {};
 
 TEST_P(SceneValidation, ReportsPathAndReason) {

@@ -2,19 +2,41 @@
 // Every scene file shipped in scenes/, for tests that run over all of them.
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <ostream>
+#include <string>
 #include <vector>
 
 namespace sdfwb::test {
 
-inline std::vector<std::filesystem::path> allSceneFiles() {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(SDFWB_SOURCE_DIR "/scenes")) {
+// A scene file named by its path under scenes/ (what test names and messages show).
+struct SceneFile {
+    std::string relative;  // e.g. "hard/thin_blade.json"
+
+    std::filesystem::path path() const { return std::filesystem::path(SDFWB_SOURCE_DIR "/scenes") / relative; }
+    bool isHardCase() const { return relative.rfind("hard/", 0) == 0; }
+    // A gtest-safe name: "hard_thin_blade".
+    std::string testName() const {
+        std::string name = relative.substr(0, relative.size() - 5);
+        for (char& c : name) {
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        }
+        return name;
+    }
+};
+
+inline void PrintTo(const SceneFile& file, std::ostream* out) { *out << file.relative; }
+
+inline std::vector<SceneFile> allSceneFiles() {
+    const std::filesystem::path root = SDFWB_SOURCE_DIR "/scenes";
+    std::vector<SceneFile> files;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
         if (entry.is_regular_file() && entry.path().extension() == ".json") {
-            files.push_back(entry.path());
+            files.push_back({std::filesystem::relative(entry.path(), root).string()});
         }
     }
-    std::sort(files.begin(), files.end());
+    std::sort(files.begin(), files.end(), [](const SceneFile& a, const SceneFile& b) { return a.relative < b.relative; });
     return files;
 }
 

@@ -57,6 +57,7 @@ struct TraceState {
     vec3 rayOrigin;
     vec3 rayDirection;
     real t;
+    real lastDistance;  // the previous primary-march distance (0 before the first)
     vec3 hitPoint;
     real hitEpsilon;
     Material material;
@@ -73,7 +74,7 @@ struct TraceState {
 
 SHARED_FN TraceState traceBegin(Ray ray) {
     Material none = Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)));
-    return TraceState(PHASE_MARCH, 0, 0, false, ray.origin, ray.direction, real(0),
+    return TraceState(PHASE_MARCH, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       real(0), real(0), real(1), 0, real(0), real(1), vec3(real(0)));
 }
@@ -179,10 +180,22 @@ SHARED_FN TraceState beginOcclusion(TraceState s, TraceSettings settings) {
     return beginShading(s, settings);
 }
 
+// Out of steps, a ray that grazes a surface (a floor towards the horizon) is
+// still closing in on it: its distances shrink geometrically with ratio
+// q = d_n / d_(n-1), so it would arrive after about d / (1 - q) more. It counts
+// as a hit when that lands within max distance.
+SHARED_FN bool convergesWithin(TraceState s, real d, TraceSettings settings) {
+    if (!(s.lastDistance > real(0)) || !(d < s.lastDistance)) {
+        return false;
+    }
+    real ratio = d / s.lastDistance;
+    return s.t + d / (real(1) - ratio) <= settings.maxDistance;
+}
+
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
     s.steps = s.steps + 1;
     real epsilon = hitEpsilonAt(settings, s.t);
-    if (field.d < epsilon) {
+    if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s, field.d, settings))) {
         s.hit = true;
         s.hitPoint = s.rayOrigin + s.rayDirection * s.t;
         s.hitEpsilon = epsilon;
@@ -193,6 +206,7 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         return s;
     }
     s.t = s.t + field.d;
+    s.lastDistance = field.d;
     if (s.t > settings.maxDistance || s.steps >= settings.maxSteps) {
         s.color = settings.background;
         s.phase = PHASE_DONE;
