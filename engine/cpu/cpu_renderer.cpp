@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "expr/tape.h"
 #include "sdf/shared.h"
 
 namespace sdfwb::cpu {
@@ -29,7 +30,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
     const Kernel kernel(program);
     using Real = typename Kernel::Real;
     using vec3 = typename Kernel::Vec3;
-    using Sample = typename Kernel::SampleType;
+    using Scratch = typename Kernel::ScratchType;
 
     const int width = program.width, height = program.height, aa = program.aa;
     RenderOutcome outcome;
@@ -49,8 +50,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
             cancelled = true;
             return;
         }
-        std::vector<vec3> points(static_cast<size_t>(program.pointRegisters));
-        std::vector<Sample> samples(static_cast<size_t>(program.sampleRegisters));
+        Scratch scratch(program);
         int x0 = (tileIndex % tilesX) * tile, y0 = (tileIndex / tilesX) * tile;
         for (int y = y0; y < std::min(y0 + tile, height); ++y) {
             for (int x = x0; x < std::min(x0 + tile, width); ++x) {
@@ -61,7 +61,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
                         // pixel centres at half-integers, rows counted from the bottom as in GL
                         Real px = Real(x) + Real(0.5) + Kernel::offset(m, aa);
                         Real py = Real(height - 1 - y) + Real(0.5) + Kernel::offset(n, aa);
-                        auto result = kernel.trace(points.data(), samples.data(), px, py);
+                        auto result = kernel.trace(scratch, px, py);
                         sum = sum + result.color;
                         steps += result.steps;
                         hits += result.hit ? 1 : 0;
@@ -108,9 +108,8 @@ RenderOutcome renderCpu(const program::Program& program, const RenderControl& co
 double evaluateDistance(const program::Program& program, const glm::dvec3& marchPoint, Precision precision) {
     auto evaluate = [&](const auto& kernel) {
         using K = std::decay_t<decltype(kernel)>;
-        std::vector<typename K::Vec3> points(static_cast<size_t>(program.pointRegisters));
-        std::vector<typename K::SampleType> samples(static_cast<size_t>(program.sampleRegisters));
-        return static_cast<double>(kernel.map(points.data(), samples.data(), typename K::Vec3(marchPoint)).d);
+        typename K::ScratchType scratch(program);
+        return static_cast<double>(kernel.map(scratch, typename K::Vec3(marchPoint)).d);
     };
     if (precision == Precision::Double) {
         return evaluate(f64::Kernel(program));

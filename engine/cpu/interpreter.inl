@@ -5,11 +5,31 @@ inline Material materialAtSlot(const vec4* params, int slot) {
     return materialFromSlots(params[slot], params[slot + 1], params[slot + 2], params[slot + 3]);
 }
 
+// Per-thread working memory of one program: register files and formula evaluators.
+struct Scratch {
+    std::vector<vec3> points;
+    std::vector<Sample> samples;
+    std::vector<expr::Evaluator<real>> formulas;
+
+    explicit Scratch(const program::Program& program)
+        : points(static_cast<size_t>(program.pointRegisters)), samples(static_cast<size_t>(program.sampleRegisters)) {
+        for (const program::FormulaCode& formula : program.formulas) {
+            formulas.emplace_back(formula.tape);
+        }
+    }
+
+    // The formula's outputs at p: value, or value and gradient.
+    std::span<const real> formula(int index, vec3 p) {
+        const real xyz[3] = {p.x, p.y, p.z};
+        return formulas[static_cast<size_t>(index)](std::span<const real>(xyz, 3));
+    }
+};
+
 // The scene's distance field: runs the program's instructions on `point`.
-// `points` and `samples` are register files sized by the program.
-inline Sample mapProgram(const program::Program& program, const vec4* params, vec3* points, Sample* samples,
-                         vec3 point) {
+inline Sample mapProgram(const program::Program& program, const vec4* params, Scratch& scratch, vec3 point) {
     using program::Opcode;
+    vec3* points = scratch.points.data();
+    Sample* samples = scratch.samples.data();
     points[0] = point;
     for (const program::Instruction& in : program.code) {
         const vec4* q = in.param >= 0 ? params + in.param : nullptr;
@@ -34,6 +54,15 @@ inline Sample mapProgram(const program::Program& program, const vec4* params, ve
         case Opcode::Cylinder: samples[in.dst] = Sample(instCylinder(p, q[0]), materialAtSlot(params, in.material)); break;
         case Opcode::Capsule: samples[in.dst] = Sample(instCapsule(p, q[0], q[1]), materialAtSlot(params, in.material)); break;
         case Opcode::Ground: samples[in.dst] = instGround(p, q[0], q[1], q[2], materialAtSlot(params, in.material)); break;
+        case Opcode::SdfFormula:
+            samples[in.dst] = Sample(instSdfFormula(scratch.formula(in.variant, p)[0]), materialAtSlot(params, in.material));
+            break;
+        case Opcode::ImplicitFormula: {
+            std::span<const real> v = scratch.formula(in.variant, p);
+            samples[in.dst] = Sample(instImplicit(p, vec4(v[0], v[1], v[2], v[3]), q[0], q[1]),
+                                     materialAtSlot(params, in.material));
+            break;
+        }
         case Opcode::Union: samples[in.dst] = instUnion(samples[in.a], samples[in.b]); break;
         case Opcode::Intersection: samples[in.dst] = instIntersection(samples[in.a], samples[in.b]); break;
         case Opcode::Difference: samples[in.dst] = instDifference(samples[in.a], samples[in.b]); break;
@@ -61,9 +90,9 @@ struct SampleResult {
 };
 
 // One sub-sample of one pixel, driven exactly as the GLSL backend's loop drives it.
-inline SampleResult traceSample(const program::Program& program, const vec4* params, vec3* points,
-                                Sample* samples, const Camera& camera, const TraceSettings& settings,
-                                const Light* lights, real px, real py) {
+inline SampleResult traceSample(const program::Program& program, const vec4* params, Scratch& scratch,
+                                const Camera& camera, const TraceSettings& settings, const Light* lights, real px,
+                                real py) {
     Ray ray = cameraRay(camera, px, py, real(program.width), real(program.height));
     TraceState s = traceBegin(ray);
     Sample field = Sample(real(0), s.material);
@@ -71,7 +100,7 @@ inline SampleResult traceSample(const program::Program& program, const vec4* par
     while (s.phase != PHASE_DONE) {
         Light light = settings.lightCount > 0 ? lights[lightIndex(s) < settings.lightCount ? lightIndex(s) : 0] : noLight;
         if (traceNeedsSample(s)) {
-            field = mapProgram(program, params, points, samples, tracePoint(s, light, settings));
+            field = mapProgram(program, params, scratch, tracePoint(s, light, settings));
         }
         s = traceAdvance(s, field, light, settings);
     }
@@ -82,7 +111,7 @@ inline SampleResult traceSample(const program::Program& program, const vec4* par
 struct Kernel {
     using Real = real;
     using Vec3 = vec3;
-    using SampleType = Sample;
+    using ScratchType = Scratch;
 
     const program::Program& program;
     std::vector<vec4> params;
@@ -105,13 +134,11 @@ struct Kernel {
         }
     }
 
-    SampleResult trace(vec3* points, Sample* samples, real px, real py) const {
-        return traceSample(program, params.data(), points, samples, camera, settings, lights.data(), px, py);
+    SampleResult trace(Scratch& scratch, real px, real py) const {
+        return traceSample(program, params.data(), scratch, camera, settings, lights.data(), px, py);
     }
 
-    Sample map(vec3* points, Sample* samples, vec3 p) const {
-        return mapProgram(program, params.data(), points, samples, p);
-    }
+    Sample map(Scratch& scratch, vec3 p) const { return mapProgram(program, params.data(), scratch, p); }
 
     static real offset(int index, int aa) { return subsampleOffset(index, aa); }
 };

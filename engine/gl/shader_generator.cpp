@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "expr/glsl.h"
 #include "sdf/glsl_sources.h"
 #include "sdf/shared.h"
 
@@ -42,6 +43,10 @@ uniform float uLightSoftness[8];
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outStats;
+// invariant: Mesa then rounds every operation feeding the outputs exactly as
+// written, instead of rewriting arithmetic (docs/toolchain-notes.md)
+invariant outColor;
+invariant outStats;
 
 vec4 P(int slot) { return texelFetch(uParams, slot); }
 Material M(int slot) { return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3)); }
@@ -90,9 +95,21 @@ std::string slots(const Instruction& in) {
 std::string point(int r) { return "p" + std::to_string(r); }
 std::string sample(int r) { return "s" + std::to_string(r); }
 
+std::string formulaName(int index) { return "formula" + std::to_string(index); }
+
 void emitInstruction(std::ostringstream& out, const Instruction& in) {
     const program::OpcodeInfo& info = opcodeInfo(in.op);
     std::string fn(info.function);
+    if (in.op == program::Opcode::SdfFormula) {
+        out << "    " << sample(in.dst) << " = Sample(" << fn << "(" << formulaName(in.variant) << "(" << point(in.a)
+            << ")), M(" << in.material << "));\n";
+        return;
+    }
+    if (in.op == program::Opcode::ImplicitFormula) {
+        out << "    " << sample(in.dst) << " = Sample(" << fn << "(" << point(in.a) << ", "
+            << formulaName(in.variant) << "(" << point(in.a) << ")" << slots(in) << "), M(" << in.material << "));\n";
+        return;
+    }
     switch (info.opClass) {
     case OpClass::Point:
         out << "    " << point(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ");\n";
@@ -137,6 +154,10 @@ void main() {
 std::string generateFragmentShader(const program::Program& program) {
     std::ostringstream out;
     out << "#version 330 core\n" << sdf::glslPrelude() << sdf::glslLibrary() << kInterface;
+    for (size_t i = 0; i < program.formulas.size(); ++i) {
+        out << "\n" << expr::emitGlslFunction(program.formulas[i].tape,
+                                              {formulaName(static_cast<int>(i)), "vec3 p", {"p.x", "p.y", "p.z"}});
+    }
     out << "\nSample map(vec3 p) {\n";
     out << "    vec3 p0 = p;\n";
     for (int r = 1; r < program.pointRegisters; ++r) {

@@ -101,6 +101,9 @@ Bounds nodeBounds(const Node& node) {
         dvec3 a = node.vec3("a"), b = node.vec3("b");
         return Bounds::box(glm::min(a, b), glm::max(a, b)).expanded(node.real("radius"));
     }
+    case NodeKind::Sdf: return Bounds::unbounded();
+    case NodeKind::Implicit:
+    case NodeKind::Polynomial: return Bounds::box(node.vec3("bounds_min"), node.vec3("bounds_max"));
     case NodeKind::Union: return childrenBounds(node);
     case NodeKind::SmoothUnion: return childrenBounds(node).expanded(node.real("k"));
     case NodeKind::Intersection:

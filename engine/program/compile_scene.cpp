@@ -5,6 +5,8 @@
 #include <map>
 
 #include "program/bounds.h"
+#include "expr/derivative.h"
+#include "expr/formula.h"
 #include "program/rotation.h"
 #include "scene/camera_frame.h"
 
@@ -68,6 +70,18 @@ private:
     int addMaterial(const scene::Material& m) {
         return addParams({dvec4(m.ambient, m.shininess), dvec4(m.diffuse, 0), dvec4(m.specular, 0),
                           dvec4(m.emission, 0)});
+    }
+
+    // The formula's tape: value, or value and gradient (x, y, z are variables 0, 1, 2).
+    int addFormula(const std::string& source, bool withGradient) {
+        expr::SpaceFormula formula = withGradient ? expr::compileImplicit(source) : expr::compileSdf(source);
+        std::vector<expr::NodeId> outputs = {formula.value};
+        if (withGradient) {
+            std::array<expr::NodeId, 3> gradient = expr::gradient(formula.graph, formula.value);
+            outputs.insert(outputs.end(), gradient.begin(), gradient.end());
+        }
+        program_.formulas.push_back({source, withGradient, expr::Tape(formula.graph, outputs)});
+        return static_cast<int>(program_.formulas.size()) - 1;
     }
 
     int materialSlot(const std::string& name) {
@@ -146,6 +160,17 @@ private:
         case NodeKind::Capsule:
             shape(Opcode::Capsule, {dvec4(node.vec3("a"), node.real("radius")), dvec4(node.vec3("b"), 0)});
             break;
+        case NodeKind::Sdf:
+            emit({Opcode::SdfFormula, s, p, -1, -1, material, addFormula(node.text("formula"), false)});
+            break;
+        case NodeKind::Implicit:
+        case NodeKind::Polynomial: {
+            dvec3 lo = node.vec3("bounds_min"), hi = node.vec3("bounds_max");
+            emit({Opcode::ImplicitFormula, s, p, -1,
+                  addParams({dvec4((lo + hi) * 0.5, node.real("max_step")), dvec4((hi - lo) * 0.5, 0)}), material,
+                  addFormula(node.text("formula"), true)});
+            break;
+        }
         default: break;
         }
         if (p != point) {
@@ -349,6 +374,10 @@ std::uint64_t Program::structureKey() const {
     mix(pointRegisters);
     mix(sampleRegisters);
     mix(result);
+    for (const FormulaCode& formula : formulas) {
+        mix(formula.withGradient);
+        for (char c : formula.source) mix(c);
+    }
     return hash;
 }
 

@@ -19,6 +19,7 @@ enum class OpClass {
 enum class Opcode {
     Translate, Rotate, Scale, Twist, Bend, Elongate, Mirror, Repeat, RepeatInfinite,
     Sphere, Box, RoundBox, Plane, Torus, Cone, Ellipsoid, Cylinder, Capsule, Ground,
+    SdfFormula, ImplicitFormula,
     Union, Intersection, Difference, SmoothUnion, SmoothIntersection, SmoothDifference,
     ScaleDistance, RoundDistance, Displace, StepScale,
     Empty,
@@ -53,6 +54,9 @@ inline constexpr std::array<OpcodeInfo, kOpcodeCount> kOpcodes = {{
     {Opcode::Cylinder, "cylinder", OpClass::Shape, 1, "instCylinder"},
     {Opcode::Capsule, "capsule", OpClass::Shape, 2, "instCapsule"},
     {Opcode::Ground, "ground", OpClass::Shape, 3, "instGround"},
+    // Formula shapes: Instruction::variant indexes Program::formulas
+    {Opcode::SdfFormula, "sdf_formula", OpClass::Shape, 0, "instSdfFormula"},
+    {Opcode::ImplicitFormula, "implicit_formula", OpClass::Shape, 2, "instImplicit"},
     {Opcode::Union, "union", OpClass::Combine, 0, "instUnion"},
     {Opcode::Intersection, "intersection", OpClass::Combine, 0, "instIntersection"},
     {Opcode::Difference, "difference", OpClass::Combine, 0, "instDifference"},

@@ -13,9 +13,18 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "expr/tape.h"
 #include "program/opcodes.h"
 
 namespace sdfwb::program {
+
+// A user formula compiled for evaluation (engine/expr): its tape computes the
+// value (SdfFormula) or the value and gradient (ImplicitFormula), from x, y, z.
+struct FormulaCode {
+    std::string source;
+    bool withGradient = false;
+    expr::Tape tape;
+};
 
 struct Instruction {
     Opcode op;
@@ -24,7 +33,8 @@ struct Instruction {
     int b;         // second operand register (Combine: sample, Post: point), else -1
     int param;     // first parameter slot
     int material;  // Shape: parameter slot of the material (4 slots), else -1
-    int variant;   // SmoothUnion/Intersection/Difference: SMOOTH_* code; else 0
+    int variant;   // SmoothUnion/Intersection/Difference: SMOOTH_* code; formulas: index into
+                   // Program::formulas; else 0
 };
 
 // Parameter slots of one material: (ambient, shininess), (diffuse, 0), (specular, 0), (emission, 0).
@@ -61,6 +71,7 @@ struct CameraParams {
 struct Program {
     std::vector<Instruction> code;
     std::vector<glm::dvec4> params;
+    std::vector<FormulaCode> formulas;
     int pointRegisters = 1;  // register 0 holds the evaluation point
     int sampleRegisters = 1;
     int result = 0;          // sample register holding the scene's distance

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "algebra/ring.h"
+#include "expr/formula.h"
+#include "expr/to_algebra.h"
+
 namespace sdfwb::scene {
 namespace {
 
@@ -55,6 +59,14 @@ const std::array kMirror = {choice("axes", kMirrorAxes)};
 const std::array kRepeat = {vec3("spacing", NonNegative, dvec3(2.0, 0.0, 2.0)),
                             vec3("counts", NonNegativeInteger, dvec3(1.0, 0.0, 1.0))};
 const std::array kRepeatInfinite = {vec3("period", NonNegative, dvec3(2.0, 0.0, 2.0))};
+FieldSpec formula(Range kind, std::string_view value) { return {"formula", Formula, kind, std::string(value), {}, ""}; }
+const std::array kSdf = {formula(SdfFormula, "length(p) - 1"), material()};
+const std::array kImplicit = {formula(ImplicitFormula, "x^2 + y^2 + z^2 - 1"),
+                              vec3("bounds_min", Any, dvec3(-1.5)), vec3("bounds_max", Any, dvec3(1.5)),
+                              real("max_step", Positive, 0.25), material()};
+const std::array kPolynomial = {formula(PolynomialFormula, "x^2 + y^2 + z^2 - 1"),
+                                vec3("bounds_min", Any, dvec3(-1.5)), vec3("bounds_max", Any, dvec3(1.5)),
+                                real("max_step", Positive, 0.25), material()};
 
 using enum NodeKind;
 using enum NodeCategory;
@@ -87,6 +99,9 @@ const std::array<KindSpec, kNodeKindCount> kKinds = {{
     {Mirror, "mirror", Repetition, Bound, 1, 1, kMirror},
     {Repeat, "repeat", Repetition, Bound, 1, 1, kRepeat},
     {RepeatInfinite, "repeat_infinite", Repetition, Bound, 1, 1, kRepeatInfinite},
+    {Sdf, "sdf", Primitive, Exact, 0, 0, kSdf},
+    {Implicit, "implicit", Primitive, Bound, 0, 0, kImplicit},
+    {Polynomial, "polynomial", Primitive, Bound, 0, 0, kPolynomial},
 }};
 
 std::string formatNumber(double v) {
@@ -112,9 +127,25 @@ std::string checkScalar(Range range, double v) {
                    : "must be a whole number >= 0 (got " + formatNumber(v) + ")";
     case OpenAngle90:
         return (v > 0 && v < 90) ? "" : "must be strictly between 0 and 90 degrees (got " + formatNumber(v) + ")";
-    case Any:
-    case NonZeroVector:
+    default:
         return "";
+    }
+}
+
+std::string checkFormula(Range kind, const std::string& text) {
+    try {
+        switch (kind) {
+        case SdfFormula: expr::compileSdf(text); break;
+        case ImplicitFormula: expr::compileImplicit(text); break;
+        case PolynomialFormula: {
+            expr::SpaceFormula f = expr::compileImplicit(text);
+            expr::toPolynomial(f.graph, f.value, sdfwb::algebra::Ring::make({"x", "y", "z"}));
+            break;
+        }
+        default: break;
+        }
+    } catch (const std::exception& error) {
+        return error.what();
     }
     return "";
 }
@@ -182,8 +213,27 @@ std::string checkField(const FieldSpec& field, const FieldValue& value) {
     }
     case Material:
         return std::holds_alternative<std::string>(value) ? "" : "must be a material name";
+    case Formula:
+        if (!std::holds_alternative<std::string>(value)) {
+            return "must be a string";
+        }
+        return checkFormula(field.range, std::get<std::string>(value));
     }
     return "";
+}
+
+std::vector<std::pair<std::string, std::string>> checkNodeFields(const KindSpec& spec,
+                                                                 const std::vector<FieldValue>& values) {
+    std::vector<std::pair<std::string, std::string>> problems;
+    int lo = fieldIndex(spec, "bounds_min"), hi = fieldIndex(spec, "bounds_max");
+    if (lo >= 0 && hi >= 0) {
+        const dvec3* a = std::get_if<dvec3>(&values[static_cast<size_t>(lo)]);
+        const dvec3* b = std::get_if<dvec3>(&values[static_cast<size_t>(hi)]);
+        if (a && b && !(a->x < b->x && a->y < b->y && a->z < b->z)) {
+            problems.emplace_back("bounds_max", "must be greater than bounds_min in every component");
+        }
+    }
+    return problems;
 }
 
 }  // namespace sdfwb::scene

@@ -5,7 +5,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -22,8 +24,10 @@ enum class NodeKind {
     Twist, Bend, Round, Displace, Elongate,
     // repetition
     Mirror, Repeat, RepeatInfinite,
+    // primitives given by a formula (docs/formula-language.md)
+    Sdf, Implicit, Polynomial,
 };
-inline constexpr int kNodeKindCount = static_cast<int>(NodeKind::RepeatInfinite) + 1;
+inline constexpr int kNodeKindCount = static_cast<int>(NodeKind::Polynomial) + 1;
 
 enum class NodeCategory { Primitive, Boolean, Affine, Deforming, Repetition };
 
@@ -36,10 +40,15 @@ enum class FieldType {
     Vec3,      // glm::dvec3
     Choice,    // std::string, one of FieldSpec::choices
     Material,  // std::string, the name of a scene material ("" = the default material)
+    Formula,   // std::string in the formula language; Range says which kind
 };
 
 // Constraint on a Real field, or on every component of a Vec3 field.
-enum class Range { Any, Positive, NonNegative, Integer2or3, NonNegativeInteger, OpenAngle90, NonZeroVector };
+enum class Range {
+    Any, Positive, NonNegative, Integer2or3, NonNegativeInteger, OpenAngle90, NonZeroVector,
+    // Formula fields: a signed distance, an implicit equation F = 0, a polynomial in x, y, z
+    SdfFormula, ImplicitFormula, PolynomialFormula,
+};
 
 using FieldValue = std::variant<double, glm::dvec3, std::string>;
 
@@ -71,7 +80,13 @@ std::span<const KindSpec> allKinds();
 int fieldIndex(const KindSpec& spec, std::string_view field);
 
 // Empty when `value` satisfies the field's type and range; otherwise the reason,
-// phrased to follow "<path>: ", e.g. "must be > 0 (got -1)".
+// phrased to follow "<path>: ", e.g. "must be > 0 (got -1)" or, for a formula,
+// "column 7: expected ')' after function arguments".
 std::string checkField(const FieldSpec& field, const FieldValue& value);
+
+// Problems that involve several fields of one node (e.g. bounds_min < bounds_max),
+// as (field name, reason) pairs.
+std::vector<std::pair<std::string, std::string>> checkNodeFields(const KindSpec& spec,
+                                                                 const std::vector<FieldValue>& values);
 
 }  // namespace sdfwb::scene

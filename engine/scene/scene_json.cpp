@@ -198,7 +198,8 @@ FieldValue readFieldValue(Reader& reader, const FieldSpec& field, const json& va
         break;
     }
     case FieldType::Choice:
-    case FieldType::Material: {
+    case FieldType::Material:
+    case FieldType::Formula: {
         std::string s;
         if (!value.is_string()) {
             reader.fail(path, "must be a string");
@@ -258,6 +259,9 @@ Node readNode(Reader& reader, const json& value, const std::string& path) {
         });
     }
     object.finish(spec->name);
+    for (const auto& [field, reason] : checkNodeFields(*spec, node.fields)) {
+        reader.fail(path + "." + field, reason);
+    }
     int count = static_cast<int>(node.children.size());
     if (count < spec->minChildren || (spec->maxChildren >= 0 && count > spec->maxChildren)) {
         std::string expected = spec->minChildren == spec->maxChildren

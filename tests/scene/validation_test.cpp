@@ -48,7 +48,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "root.kind: unknown node kind \"spere\" (known: sphere, box, round_box, plane, torus, cone, "
                   "ellipsoid, cylinder, capsule, union, intersection, difference, smooth_union, "
                   "smooth_intersection, smooth_difference, translate, rotate, scale, twist, bend, round, "
-                  "displace, elongate, mirror, repeat, repeat_infinite)"},
+                  "displace, elongate, mirror, repeat, repeat_infinite, sdf, implicit, polynomial)"},
         ErrorCase{"wrong_vector", document(R"({"kind": "box", "half_extents": [1, 2]})"),
                   "root.half_extents: must be an array of 3 numbers"},
         ErrorCase{"zero_half_extent", document(R"({"kind": "box", "half_extents": [1, 0, 1]})"),
@@ -79,6 +79,14 @@ INSTANTIATE_TEST_SUITE_P(
                   "format: must be \"sdf-workbench-scene\""},
         ErrorCase{"duplicate_material", document(R"({"kind": "sphere"})", R"("materials": [{"name": "a"}, {"name": "a"}], )"),
                   "materials[1].name: duplicate material name \"a\""},
+        ErrorCase{"formula_syntax", document(R"({"kind": "sdf", "formula": "length(p) - "})"),
+                  "root.formula: column 13: expected an expression"},
+        ErrorCase{"formula_unknown_name", document(R"({"kind": "implicit", "formula": "x^2 + q"})"),
+                  "root.formula: column 7: unknown name 'q' (a formula over space uses p, x, y, z and its let names)"},
+        ErrorCase{"not_a_polynomial", document(R"({"kind": "polynomial", "formula": "sqrt(x) - 1"})"),
+                  "root.formula: column 1: 'sqrt' is not a polynomial or rational function"},
+        ErrorCase{"bounds_order", document(R"({"kind": "implicit", "bounds_min": [1, 0, 0], "bounds_max": [0, 1, 1]})"),
+                  "root.bounds_max: must be greater than bounds_min in every component"},
         ErrorCase{"malformed_json", "{\n  \"format\": \"sdf-workbench-scene\",\n  \"version\": 1,,\n}",
                   "line 3, column 16: invalid JSON: syntax error while parsing object key - unexpected ','; "
                   "expected string literal"}),

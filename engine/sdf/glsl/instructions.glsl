@@ -31,6 +31,24 @@ SHARED_FN real instEllipsoid(vec3 p, vec4 q0) { return sdEllipsoid(p, xyz(q0)); 
 SHARED_FN real instCylinder(vec3 p, vec4 q0) { return sdCylinder(p, q0.x, q0.y); }
 SHARED_FN real instCapsule(vec3 p, vec4 q0, vec4 q1) { return sdCapsule(p, xyz(q0), xyz(q1), q0.w); }
 
+// Formula shapes: the formula's value, or value and gradient v = (F, dF/dx,
+// dF/dy, dF/dz), comes from code generated from the user's formula.
+SHARED_FN real instSdfFormula(real value) { return value; }
+
+// An implicit surface F = 0 (inside F < 0) inside its bounding box, with the
+// distance bound |F| / |grad F| (thesis, Proposition 1.2) clamped to a maximum
+// step: the bound is only local, overshooting far from the surface and useless
+// where grad F vanishes. q0 = (box centre, max step), q1 = (box half extents).
+SHARED_FN real instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1) {
+    real box = sdBox(p - xyz(q0), xyz(q1));
+    real gradientLength = length3(vec3(v.y, v.z, v.w));
+    real bound = q0.w;
+    if (gradientLength > real(0)) {
+        bound = min(abs(v.x) / gradientLength, q0.w);
+    }
+    return max(box, v.x < real(0) ? -bound : bound);
+}
+
 // The ground plane y = height, in march coordinates: q0 = (height - eye.y, pattern),
 // q1 = (eye, cell size), q2 = (second colour, line width).
 SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
