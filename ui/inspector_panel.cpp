@@ -157,8 +157,9 @@ void drawInspector(Editor& editor, UiState& ui) {
     }
     ImGui::PopItemWidth();
     if (spec.maxChildren != 0) {
-        ImGui::TextDisabled("%zu child%s; %s", node->children.size(), node->children.size() == 1 ? "" : "ren",
-                            spec.category == scene::NodeCategory::Boolean ? "folded in child order" : "");
+        bool folded = spec.category == scene::NodeCategory::Boolean;
+        ImGui::TextDisabled("%zu child%s%s", node->children.size(), node->children.size() == 1 ? "" : "ren",
+                            folded ? ", folded in child order (drag to reorder)" : "");
     }
     for (const std::string& problem : ui.inspectorProblems) {
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));

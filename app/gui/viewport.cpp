@@ -1,5 +1,7 @@
 #include "app/gui/viewport.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 
 #include "program/compile_scene.h"
@@ -7,7 +9,8 @@
 namespace sdfwb::app::gui {
 
 namespace {
-constexpr int kTileSize = 64;          // pixels per side of one GL draw
+constexpr int kDefaultTileSize = 64;   // pixels per side of one GL draw, before any measurement
+constexpr double kDrawBudget = 0.006;  // seconds one GL draw should take at most
 constexpr std::uint64_t kStageTags = 16;  // CPU job tags: plan * 16 + stage
 
 std::uint64_t mix(std::uint64_t seed, std::uint64_t value) {
@@ -107,7 +110,7 @@ void Viewport::updateGl(double budgetSeconds) {
                 return;
             }
             error_.clear();
-            glJob_ = std::make_unique<gl::ProgressiveRender>(renderer_, std::move(program), kTileSize);
+            glJob_ = std::make_unique<gl::ProgressiveRender>(renderer_, std::move(program), tileSize());
         }
         for (const gl::TileRect& tile : glJob_->advance(budgetSeconds)) {
             glTexture_.upload(glJob_->frame(), tile, stage.scale, heat_, scene_.render.maxSteps);
@@ -115,6 +118,9 @@ void Viewport::updateGl(double budgetSeconds) {
         stats_.status = "GL: rendering " + std::to_string(static_cast<int>(glJob_->progress() * 100)) + "%" +
                         (stage.scale > 1 ? " (preview)" : " at AA " + std::to_string(stage.aa));
         if (glJob_->done()) {
+            const program::Program& done = glJob_->program();
+            double samples = static_cast<double>(done.width) * done.height * done.aa * done.aa;
+            secondsPerSample_ = glJob_->drawSeconds() / std::max(1.0, samples);
             finishStage(glJob_->frame(), glJob_->drawSeconds(), stage, true);
             glJob_.reset();
             ++glStage_;
@@ -124,6 +130,13 @@ void Viewport::updateGl(double budgetSeconds) {
         glJob_.reset();
         glStage_ = stages_.size();
     }
+}
+
+int Viewport::tileSize() const {
+    if (secondsPerSample_ <= 0) return kDefaultTileSize;
+    // a square tile whose single sub-sample pass costs about kDrawBudget
+    int side = static_cast<int>(std::sqrt(kDrawBudget / secondsPerSample_));
+    return std::clamp(side / 16 * 16, 16, 256);
 }
 
 void Viewport::updateCpu() {

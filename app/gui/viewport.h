@@ -93,6 +93,11 @@ private:
     std::optional<image::Frame> glFinal_, cpuFinal_;
     std::optional<image::Comparison> comparison_;
 
+    // Measured cost of one GL sample (pixel x AA sub-sample), which sizes
+    // the next job's tiles so that one draw stays well inside the budget.
+    double secondsPerSample_ = 0;
+    int tileSize() const;
+
     ViewportStats stats_;
     std::string error_;
 };

@@ -33,13 +33,13 @@ std::string readAll(const fs::path& path) {
     return text.str();
 }
 
-// Where the viewport shows the scene at 1280x800, clear of the statistics
-// overlay (top left of the viewport) and of the side panels.
+// Where the viewport shows the scene at 1280x800 (left of the 390-pixel side
+// column), below the statistics overlay and above the status bar.
 struct Crop {
     int x0, y0, x1, y1;
 };
 Crop viewportCrop(const image::Image& shot) {
-    return {shot.width * 35 / 100, shot.height * 45 / 100, shot.width * 65 / 100, shot.height * 90 / 100};
+    return {shot.width * 5 / 100, shot.height * 30 / 100, shot.width * 65 / 100, shot.height * 90 / 100};
 }
 
 // Mean absolute difference in levels of 255, over the crop.
