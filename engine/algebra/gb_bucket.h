@@ -156,27 +156,37 @@ class Bucket {
     const std::size_t stride = layout_.stride();
     Poly<Coeff>& a = level.poly;
     Poly<Coeff>& out = scratch_;
-    out.clear();
-    out.mons.reserve((live(i) + p.size()) * stride);
-    out.coeffs.reserve(live(i) + p.size());
+    // Sized once for the worst case and trimmed after: cheaper than growing
+    // the monomial array term by term.
+    const std::size_t most = live(i) + p.size();
+    out.mons.resize(most * stride);
+    out.coeffs.clear();
+    out.coeffs.reserve(most);
+    Word* write = out.mons.data();
+    auto emit = [&](const Word* mon, Coeff&& c) {
+      std::copy_n(mon, stride, write);
+      write += stride;
+      out.coeffs.push_back(std::move(c));
+    };
     std::size_t x = level.head, y = 0;
     while (x < a.size() && y < p.size()) {
       int c = layout_.compare(a.mon(x, stride), p.mon(y, stride));
       if (c > 0) {
-        out.push(a.mon(x, stride), stride, std::move(a.coeffs[x]));
+        emit(a.mon(x, stride), std::move(a.coeffs[x]));
         ++x;
       } else if (c < 0) {
-        out.push(p.mon(y, stride), stride, std::move(p.coeffs[y]));
+        emit(p.mon(y, stride), std::move(p.coeffs[y]));
         ++y;
       } else {
         domain_.add(a.coeffs[x], p.coeffs[y]);
-        if (!Domain::is_zero(a.coeffs[x])) out.push(a.mon(x, stride), stride, std::move(a.coeffs[x]));
+        if (!Domain::is_zero(a.coeffs[x])) emit(a.mon(x, stride), std::move(a.coeffs[x]));
         ++x;
         ++y;
       }
     }
-    for (; x < a.size(); ++x) out.push(a.mon(x, stride), stride, std::move(a.coeffs[x]));
-    for (; y < p.size(); ++y) out.push(p.mon(y, stride), stride, std::move(p.coeffs[y]));
+    for (; x < a.size(); ++x) emit(a.mon(x, stride), std::move(a.coeffs[x]));
+    for (; y < p.size(); ++y) emit(p.mon(y, stride), std::move(p.coeffs[y]));
+    out.mons.resize(out.coeffs.size() * stride);
     std::swap(a, out);
     level.head = 0;
     out.clear();

@@ -1,8 +1,6 @@
 #include "algebra/gb_engine.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 namespace sdfwb::algebra::gb {
 
@@ -120,7 +118,6 @@ void Engine<D>::push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar,
 
 template <class D>
 void Engine<D>::insert(P h) {
-  if (getenv("GBDEBUG")) { size_t mb = 0; if constexpr (D::has_content) for (auto& c : h.coeffs) mb = std::max(mb, mpz_sizeinbase(c.get_mpz_t(), 2)); fprintf(stderr, "insert terms %zu bits %zu sugar %u deg %u\n", h.size(), mb, h.sugar, layout_.degree(h.mons.data())); }
   const std::size_t stride = layout_.stride();
   const auto k = static_cast<std::uint32_t>(basis_.size());
   basis_bytes_ += h.bytes();
@@ -207,12 +204,7 @@ void Engine<D>::insert(P h) {
       kept.push_back(r);
     }
   }
-  // Keep reducers sorted by length: find_reducer returns the first match, and
-  // short reducers add fewer terms (and less coefficient growth) per step.
-  auto position = std::upper_bound(kept.begin(), kept.end(), k, [this](std::uint32_t a, std::uint32_t b) {
-    return basis_[a].poly.size() < basis_[b].poly.size();
-  });
-  kept.insert(position, k);
+  kept.push_back(k);
   reducers_ = std::move(kept);
   stats_.max_basis_size = std::max(stats_.max_basis_size, reducers_.size());
 }
@@ -232,6 +224,27 @@ void Engine<D>::interreduce() {
     P reduced = reduce(std::move(result), g.sugar);
     monitor_.check(progress("interreduction"), own_bytes());
     basis_[r].poly = std::move(reduced);
+  }
+}
+
+template <class D>
+void Engine<D>::load_s_polynomial(const Pair& pair) {
+  const std::size_t stride = layout_.stride();
+  const P& f = basis_[pair.i].poly;
+  const P& g = basis_[pair.j].poly;
+  Coeff scale{}, multiplier{};
+  domain_.cancel_factors(f.coeffs.front(), g.coeffs.front(), scale, multiplier);
+  domain_.negate(multiplier);
+  std::vector<Word> shift(stride);
+  const Word* l = pair_lcm(pair);
+  bucket_.clear();
+  if (f.size() > 1) {
+    layout_.divide(shift.data(), l, f.mons.data());
+    bucket_.add_multiple(f, 1, scale, shift.data());
+  }
+  if (g.size() > 1) {
+    layout_.divide(shift.data(), l, g.mons.data());
+    bucket_.add_multiple(g, 1, multiplier, shift.data());
   }
 }
 
@@ -262,21 +275,7 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
       P copy = generators_[pair.i];
       bucket_.add(std::move(copy));
     } else {
-      const P& f = basis_[pair.i].poly;
-      const P& g = basis_[pair.j].poly;
-      Coeff scale{}, multiplier{};
-      domain_.cancel_factors(f.coeffs.front(), g.coeffs.front(), scale, multiplier);
-      domain_.negate(multiplier);
-      std::vector<Word> shift(stride);
-      const Word* l = pair_lcm(pair);
-      if (f.size() > 1) {
-        layout_.divide(shift.data(), l, f.mons.data());
-        bucket_.add_multiple(f, 1, scale, shift.data());
-      }
-      if (g.size() > 1) {
-        layout_.divide(shift.data(), l, g.mons.data());
-        bucket_.add_multiple(g, 1, multiplier, shift.data());
-      }
+      load_s_polynomial(pair);
     }
     P h = reduce(P{}, pair.sugar);
     if (h.empty()) {
@@ -301,6 +300,32 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
     return layout_.compare(a.mons.data(), b.mons.data()) < 0;
   });
   return result;
+}
+
+template <class D>
+bool Engine<D>::is_groebner(std::vector<P> basis) {
+  const std::size_t stride = layout_.stride();
+  for (P& g : basis) {
+    if (g.empty()) continue;
+    std::uint32_t degree = 0;
+    for (std::size_t t = 0; t < g.size(); ++t) degree = std::max(degree, layout_.degree(g.mon(t, stride)));
+    g.sugar = degree;
+    insert(std::move(g));
+  }
+  const auto later = [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); };
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    Pair pair = pairs_[heap_.back()];
+    heap_.pop_back();
+    if (!pair.alive) continue;
+    --live_pairs_;
+    monitor_.check(progress("verification"), own_bytes());
+    ++stats_.pairs_treated;
+    load_s_polynomial(pair);
+    if (!reduce(P{}, pair.sugar).empty()) return false;
+    ++stats_.zero_reductions;
+  }
+  return true;
 }
 
 template <class D>

@@ -34,6 +34,11 @@ class Engine {
   /// Throws BudgetExceeded at a safe point when the budget runs out.
   std::vector<P> groebner(std::vector<P> input);
 
+  /// True if `basis` (nonzero, normalized polynomials) is a Groebner basis:
+  /// every S-pair that survives the criteria reduces to zero. Use on a fresh
+  /// engine.
+  bool is_groebner(std::vector<P> basis);
+
   /// Installs a basis that is already a (reduced or not) Groebner basis, for
   /// normal_form.
   void set_basis(std::vector<P> basis);
@@ -64,6 +69,8 @@ class Engine {
   int find_reducer(const Word* mon, std::uint64_t mask) const;
   /// Reduces the bucket completely; `result` holds terms already final.
   P reduce(P result, std::uint32_t sugar, Coeff* scale_product = nullptr);
+  /// Clears the bucket and loads the S-polynomial of a pair of elements.
+  void load_s_polynomial(const Pair& pair);
   /// Divides the polynomial under reduction (result and bucket) by its content.
   void remove_content(P& result);
   void insert(P h);

@@ -2,6 +2,7 @@
 
 #include "algebra/gb_convert.h"
 #include "algebra/gb_engine.h"
+#include "algebra/gb_modular.h"
 
 #include <stdexcept>
 
@@ -22,6 +23,17 @@ void check_ring(const std::vector<Polynomial>& polys, const RingPtr& ring, const
 GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options) {
   GroebnerResult result;
   BudgetMonitor monitor(options.budget);
+  if (options.method != GroebnerMethod::rational) {
+    try {
+      result.basis = gb::modular_groebner(ideal.generators(), ideal.ring(), monitor, result.stats);
+    } catch (const BudgetExceeded& e) {
+      result.status = e.status;
+      result.message = e.message;
+      result.basis.clear();
+    }
+    result.seconds = monitor.elapsed_seconds();
+    return result;
+  }
   const gb::Layout layout(*ideal.ring());
   const gb::IntegerDomain domain;
   IntegerEngine engine(layout, domain, monitor);

@@ -20,8 +20,20 @@
 
 namespace sdfwb::algebra {
 
+enum class GroebnerMethod {
+  /// The fastest exact method we have (currently: modular).
+  automatic,
+  /// Bases modulo several primes, lifted to Q and verified over Q
+  /// (see gb_modular.h for what the verification proves).
+  modular,
+  /// Buchberger directly over Q with fraction-free integer arithmetic; every
+  /// step exact, but intermediate coefficients can grow enormously.
+  rational,
+};
+
 struct GroebnerOptions {
   Budget budget;
+  GroebnerMethod method = GroebnerMethod::automatic;
 };
 
 struct GroebnerResult {

@@ -1,0 +1,277 @@
+#include "algebra/gb_modular.h"
+
+#include "algebra/gb_convert.h"
+#include "algebra/gb_engine.h"
+
+#include <stdexcept>
+
+namespace sdfwb::algebra::gb {
+
+namespace {
+
+using ModPoly = Poly<std::uint32_t>;
+
+std::uint32_t mod_p(const mpz_class& value, std::uint32_t p) {
+  return static_cast<std::uint32_t>(mpz_fdiv_ui(value.get_mpz_t(), p));
+}
+
+// f mod p in the engine's representation; false when p divides a
+// denominator or the leading coefficient (such primes are skipped).
+bool to_modular(const Polynomial& f, const Layout& layout, const ModularDomain& domain, ModPoly& out) {
+  const std::size_t stride = layout.stride();
+  std::vector<Word> mon(stride);
+  out.clear();
+  for (const Term& t : f.terms()) {
+    std::uint32_t den = mod_p(t.coefficient.get_den(), domain.p);
+    if (den == 0) return false;
+    std::uint32_t c;
+    domain.mul(c, mod_p(t.coefficient.get_num(), domain.p), domain.inverse(den));
+    if (c == 0) {
+      if (&t == &f.terms().front()) return false;
+      continue;
+    }
+    for (std::size_t v = 0; v < layout.vars(); ++v) mon[layout.keys() + v] = static_cast<Word>(t.monomial[v]);
+    layout.encode_keys(mon.data());
+    out.push(mon.data(), stride, std::uint32_t{c});
+  }
+  return true;
+}
+
+// Bases modulo the primes that share one set of leading monomials, combined
+// by Chinese remaindering: residues modulo the product of those primes.
+struct Group {
+  std::vector<IntPoly> polys;
+  mpz_class modulus = 1;
+  std::size_t primes = 0;
+};
+
+bool same_leads(const Layout& layout, const std::vector<IntPoly>& a, const std::vector<ModPoly>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!layout.equal(a[i].mons.data(), b[i].mons.data())) return false;
+  }
+  return true;
+}
+
+// acc (mod M) and next (mod p) -> residues mod M*p over the union of supports.
+IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& modulus, const ModPoly& next,
+                          std::uint32_t p) {
+  const std::size_t stride = layout.stride();
+  const ModularDomain domain{p};
+  const std::uint32_t m_inverse = domain.inverse(mod_p(modulus, p));
+  IntPoly out;
+  auto combine = [&](const Word* mon, mpz_class&& r, std::uint32_t c) {
+    // r + M * ((c - r) / M mod p)
+    std::uint32_t r_mod = mod_p(r, p);
+    std::uint32_t diff = c >= r_mod ? c - r_mod : c + (p - r_mod);
+    std::uint32_t t;
+    domain.mul(t, diff, m_inverse);
+    mpz_addmul_ui(r.get_mpz_t(), modulus.get_mpz_t(), t);
+    out.push(mon, stride, std::move(r));
+  };
+  std::size_t x = 0, y = 0;
+  while (x < acc.size() || y < next.size()) {
+    int c = x == acc.size() ? -1 : y == next.size() ? 1 : layout.compare(acc.mon(x, stride), next.mon(y, stride));
+    if (c > 0) {
+      combine(acc.mon(x, stride), std::move(acc.coeffs[x]), 0);
+      ++x;
+    } else if (c < 0) {
+      combine(next.mon(y, stride), mpz_class(0), next.coeffs[y]);
+      ++y;
+    } else {
+      combine(acc.mon(x, stride), std::move(acc.coeffs[x]), next.coeffs[y]);
+      ++x;
+      ++y;
+    }
+  }
+  return out;
+}
+
+void accumulate(const Layout& layout, Group& group, const std::vector<ModPoly>& basis, std::uint32_t p) {
+  if (group.primes == 0) {
+    for (const ModPoly& g : basis) {
+      IntPoly lifted;
+      lifted.mons = g.mons;
+      for (std::uint32_t c : g.coeffs) lifted.coeffs.emplace_back(c);
+      group.polys.push_back(std::move(lifted));
+    }
+  } else {
+    for (std::size_t i = 0; i < basis.size(); ++i) {
+      group.polys[i] = chinese_remainder(layout, group.polys[i], group.modulus, basis[i], p);
+    }
+  }
+  group.modulus *= p;
+  ++group.primes;
+}
+
+Monomial to_monomial(const Layout& layout, const Word* mon) {
+  Monomial m(layout.vars());
+  const Word* e = layout.exponents(mon);
+  for (std::size_t v = 0; v < layout.vars(); ++v) m[v] = static_cast<Exponent>(e[v]);
+  return m;
+}
+
+// Rational reconstruction of every coefficient; nullopt if one fails.
+std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const Group& group, const RingPtr& ring) {
+  const std::size_t stride = layout.stride();
+  std::vector<Polynomial> out;
+  for (const IntPoly& g : group.polys) {
+    std::vector<Term> terms;
+    for (std::size_t t = 0; t < g.size(); ++t) {
+      if (mpz_sgn(g.coeffs[t].get_mpz_t()) == 0) continue;
+      mpq_class q;
+      if (!rational_reconstruction(g.coeffs[t], group.modulus, q)) return std::nullopt;
+      terms.push_back(Term{to_monomial(layout, g.mon(t, stride)), std::move(q)});
+    }
+    out.emplace_back(ring, std::move(terms));
+  }
+  return out;
+}
+
+// The candidate reduced mod p equals the basis computed mod p.
+bool agrees_modulo(const Layout& layout, const std::vector<Polynomial>& candidate, const std::vector<ModPoly>& basis,
+                   std::uint32_t p) {
+  if (candidate.size() != basis.size()) return false;
+  const ModularDomain domain{p};
+  ModPoly reduced;
+  for (std::size_t i = 0; i < basis.size(); ++i) {
+    if (!to_modular(candidate[i], layout, domain, reduced)) return false;
+    if (reduced.mons != basis[i].mons || reduced.coeffs != basis[i].coeffs) return false;
+  }
+  return true;
+}
+
+// Exact check over Q: the candidate is a Groebner basis and contains the input.
+bool verify(const Layout& layout, const std::vector<Polynomial>& candidate, const std::vector<Polynomial>& input,
+            BudgetMonitor& monitor, GroebnerStats& stats) {
+  const IntegerDomain domain;
+  std::vector<IntPoly> packed;
+  for (const Polynomial& g : candidate) packed.push_back(to_integer_poly(g, layout));
+  Engine<IntegerDomain> membership(layout, domain, monitor);
+  membership.set_basis(packed);
+  for (const Polynomial& f : input) {
+    if (f.is_zero()) continue;
+    if (!membership.normal_form(to_integer_poly(f, layout)).empty()) return false;
+  }
+  Engine<IntegerDomain> pairs(layout, domain, monitor);
+  bool ok = pairs.is_groebner(std::move(packed));
+  stats.verification_pairs += pairs.stats().pairs_treated;
+  return ok;
+}
+
+}  // namespace
+
+std::uint32_t previous_prime(std::uint32_t below) {
+  auto mul_mod = [](std::uint64_t a, std::uint64_t b, std::uint64_t m) { return a * b % m; };
+  auto pow_mod = [&](std::uint64_t b, std::uint64_t e, std::uint64_t m) {
+    std::uint64_t r = 1;
+    for (b %= m; e; e >>= 1, b = mul_mod(b, b, m)) {
+      if (e & 1) r = mul_mod(r, b, m);
+    }
+    return r;
+  };
+  auto is_prime = [&](std::uint32_t n) {
+    if (n < 2) return false;
+    for (std::uint32_t small : {2u, 3u, 5u, 7u, 11u, 13u}) {
+      if (n % small == 0) return n == small;
+    }
+    std::uint32_t d = n - 1;
+    int s = 0;
+    while ((d & 1) == 0) {
+      d >>= 1;
+      ++s;
+    }
+    // Bases 2, 7, 61 decide primality for every n < 2^32.
+    for (std::uint64_t a : {2u, 7u, 61u}) {
+      std::uint64_t x = pow_mod(a, d, n);
+      if (x == 1 || x == n - 1) continue;
+      bool composite = true;
+      for (int r = 1; r < s && composite; ++r) {
+        x = mul_mod(x, x, n);
+        if (x == n - 1) composite = false;
+      }
+      if (composite) return false;
+    }
+    return true;
+  };
+  for (std::uint32_t n = below - 1; n > 1; --n) {
+    if (is_prime(n)) return n;
+  }
+  throw std::logic_error("previous_prime: no prime below " + std::to_string(below));
+}
+
+bool rational_reconstruction(const mpz_class& a, const mpz_class& modulus, mpq_class& out) {
+  // Extended Euclid on (m, a) stopped at the first remainder below
+  // sqrt(m/2) (Wang's algorithm).
+  mpz_class bound;
+  mpz_class half = modulus / 2;
+  mpz_sqrt(bound.get_mpz_t(), half.get_mpz_t());
+  mpz_class r0 = modulus, r1 = a % modulus, t0 = 0, t1 = 1, q, tmp;
+  if (r1 < 0) r1 += modulus;
+  while (r1 > bound) {
+    mpz_fdiv_q(q.get_mpz_t(), r0.get_mpz_t(), r1.get_mpz_t());
+    tmp = r0 - q * r1;
+    r0 = r1;
+    r1 = tmp;
+    tmp = t0 - q * t1;
+    t0 = t1;
+    t1 = tmp;
+  }
+  if (abs(t1) > bound || t1 == 0) return false;
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), r1.get_mpz_t(), t1.get_mpz_t());
+  if (g != 1) return false;
+  out = mpq_class(r1, t1);
+  out.canonicalize();
+  return true;
+}
+
+std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, const RingPtr& ring,
+                                         BudgetMonitor& monitor, GroebnerStats& stats) {
+  const Layout layout(*ring);
+  std::vector<Group> groups;
+  std::vector<std::vector<Word>> group_leads;  // flat lead monomials per group
+  std::optional<std::vector<Polynomial>> candidate;
+  std::size_t candidate_group = 0;
+  std::uint32_t p = 0x80000000u;
+  for (std::size_t attempt = 0; attempt < 100000; ++attempt) {
+    p = previous_prime(p);
+    const ModularDomain domain{p};
+    std::vector<ModPoly> reduced(input.size());
+    bool usable = true;
+    for (std::size_t i = 0; i < input.size() && usable; ++i) usable = to_modular(input[i], layout, domain, reduced[i]);
+    if (!usable) continue;
+    Engine<ModularDomain> engine(layout, domain, monitor);
+    std::vector<ModPoly> basis = engine.groebner(std::move(reduced));
+    if (stats.primes == 0) {
+      stats = engine.stats();  // the counters of one modular run
+    }
+    ++stats.primes;
+
+    std::vector<Word> leads;
+    for (const ModPoly& g : basis) leads.insert(leads.end(), g.mons.begin(), g.mons.begin() + layout.stride());
+    std::size_t index = 0;
+    while (index < groups.size() && !(group_leads[index] == leads)) ++index;
+    if (index == groups.size()) {
+      groups.emplace_back();
+      group_leads.push_back(leads);
+    }
+    if (candidate && candidate_group == index && agrees_modulo(layout, *candidate, basis, p)) {
+      if (verify(layout, *candidate, input, monitor, stats)) return std::move(*candidate);
+    }
+    accumulate(layout, groups[index], basis, p);
+    std::size_t largest = 0;
+    for (std::size_t g = 1; g < groups.size(); ++g) {
+      if (groups[g].primes > groups[largest].primes) largest = g;
+    }
+    if (largest == index) {
+      candidate = reconstruct(layout, groups[index], ring);
+      candidate_group = index;
+    } else if (candidate_group != largest) {
+      candidate.reset();
+    }
+  }
+  throw std::logic_error("modular Groebner basis: no stable result after 100000 primes");
+}
+
+}  // namespace sdfwb::algebra::gb

@@ -1,0 +1,111 @@
+#include "algebra/ideal_operations.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sdfwb::algebra {
+
+namespace {
+
+void check_same_ring(const Ideal& i, const Ideal& j, const char* operation) {
+  if (!(*i.ring() == *j.ring())) throw std::invalid_argument(std::string(operation) + " of ideals of different rings");
+}
+
+Decision decision_from(const GroebnerResult& result, bool value) {
+  Decision d;
+  d.status = result.status;
+  d.message = result.message;
+  d.value = result.ok() && value;
+  d.seconds = result.seconds;
+  return d;
+}
+
+// The ring's variables with `extra` prepended and a block order that ranks
+// them above the ring's own variables (ordered as before when possible).
+RingPtr with_eliminated_first(const Ring& ring, const std::vector<std::string>& extra) {
+  std::vector<std::string> names = extra;
+  names.insert(names.end(), ring.variables().begin(), ring.variables().end());
+  return Ring::make(names, MonomialOrder::elimination(extra.size(), MonomialOrder::degrevlex(), ring.order()));
+}
+
+}  // namespace
+
+Ideal sum(const Ideal& i, const Ideal& j) {
+  check_same_ring(i, j, "sum");
+  std::vector<Polynomial> generators = i.generators();
+  generators.insert(generators.end(), j.generators().begin(), j.generators().end());
+  return Ideal(i.ring(), generators);
+}
+
+Ideal product(const Ideal& i, const Ideal& j) {
+  check_same_ring(i, j, "product");
+  std::vector<Polynomial> generators;
+  for (const Polynomial& f : i.generators()) {
+    for (const Polynomial& g : j.generators()) generators.push_back(f * g);
+  }
+  return Ideal(i.ring(), generators);
+}
+
+Decision contains(const Ideal& ideal, const Polynomial& f, const GroebnerOptions& options) {
+  GroebnerResult basis = groebner_basis(ideal, options);
+  if (!basis.ok()) return decision_from(basis, false);
+  return decision_from(basis, normal_form(f.in_ring(ideal.ring()), basis.basis).is_zero());
+}
+
+Decision radical_contains(const Ideal& ideal, const Polynomial& f, const GroebnerOptions& options) {
+  const std::string y = internal_variable_name("y", ideal.ring()->variables());
+  RingPtr ring = with_eliminated_first(*ideal.ring(), {y});
+  std::vector<Polynomial> generators;
+  for (const Polynomial& g : ideal.generators()) generators.push_back(g.in_ring(ring));
+  generators.push_back(1 - f.in_ring(ring) * ring->var(y));
+  GroebnerResult basis = groebner_basis(Ideal(ring, generators), options);
+  return decision_from(basis, basis.basis.size() == 1 && basis.basis.front().is_constant());
+}
+
+GroebnerResult intersection(const Ideal& i, const Ideal& j, const GroebnerOptions& options) {
+  check_same_ring(i, j, "intersection");
+  const std::string t = internal_variable_name("t", i.ring()->variables());
+  RingPtr ring = with_eliminated_first(*i.ring(), {t});
+  Polynomial tv = ring->var(t);
+  std::vector<Polynomial> generators;
+  for (const Polynomial& f : i.generators()) generators.push_back(tv * f.in_ring(ring));
+  for (const Polynomial& g : j.generators()) generators.push_back((1 - tv) * g.in_ring(ring));
+  GroebnerResult result = groebner_basis(Ideal(ring, generators), options);
+  std::vector<Polynomial> kept;
+  for (const Polynomial& g : result.basis) {
+    if (!g.contains_variable(0)) kept.push_back(g.in_ring(i.ring()));
+  }
+  result.basis = std::move(kept);
+  return result;
+}
+
+GroebnerResult eliminate(const Ideal& ideal, const std::vector<std::string>& variables,
+                         const GroebnerOptions& options, const MonomialOrder& remaining_order) {
+  const Ring& ring = *ideal.ring();
+  for (const std::string& v : variables) {
+    if (!ring.index_of(v)) throw std::invalid_argument("eliminate: unknown variable '" + v + "'");
+  }
+  std::vector<std::string> eliminated, remaining;
+  for (const std::string& v : ring.variables()) {
+    bool drop = std::find(variables.begin(), variables.end(), v) != variables.end();
+    (drop ? eliminated : remaining).push_back(v);
+  }
+  RingPtr remaining_ring = Ring::make(remaining, remaining_order);
+  std::vector<std::string> names = eliminated;
+  names.insert(names.end(), remaining.begin(), remaining.end());
+  RingPtr block = Ring::make(names, MonomialOrder::elimination(eliminated.size(), MonomialOrder::degrevlex(),
+                                                                remaining_order));
+  GroebnerResult result = groebner_basis(Ideal(block, ideal.generators()), options);
+  std::vector<Polynomial> kept;
+  for (const Polynomial& g : result.basis) {
+    bool free = true;
+    for (std::size_t v = 0; v < eliminated.size() && free; ++v) free = !g.contains_variable(v);
+    if (free) kept.push_back(g.in_ring(remaining_ring));
+  }
+  // The basis is sorted by increasing leading monomial in the block order,
+  // which agrees with remaining_order on these polynomials.
+  result.basis = std::move(kept);
+  return result;
+}
+
+}  // namespace sdfwb::algebra

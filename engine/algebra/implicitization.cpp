@@ -1,0 +1,164 @@
+#include "algebra/implicitization.h"
+
+#include "algebra/division.h"
+#include "algebra/ideal_operations.h"
+#include "algebra/polynomial_gcd.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sdfwb::algebra {
+
+namespace {
+
+struct Fractions {
+  RingPtr ring;  // parameters, degrevlex
+  std::vector<Polynomial> numerators, denominators, relations;
+};
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// Checks the input and moves everything into the ring of the parameters.
+Fractions prepare(const RationalParametrization& p) {
+  const std::size_t n = p.coordinates.size();
+  if (n == 0) throw std::invalid_argument("implicitize: no coordinates");
+  if (p.numerators.size() != n) {
+    throw std::invalid_argument("implicitize: " + std::to_string(p.numerators.size()) + " numerators for " +
+                                std::to_string(n) + " coordinates");
+  }
+  if (!p.denominators.empty() && p.denominators.size() != n) {
+    throw std::invalid_argument("implicitize: " + std::to_string(p.denominators.size()) + " denominators for " +
+                                std::to_string(n) + " coordinates");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (contains(p.parameters, p.coordinates[i])) {
+      throw std::invalid_argument("implicitize: '" + p.coordinates[i] + "' is both a coordinate and a parameter");
+    }
+    if (std::count(p.coordinates.begin(), p.coordinates.end(), p.coordinates[i]) > 1) {
+      throw std::invalid_argument("implicitize: coordinate '" + p.coordinates[i] + "' given twice");
+    }
+  }
+  Fractions f;
+  f.ring = Ring::make(p.parameters, MonomialOrder::degrevlex());
+  auto move = [&](const Polynomial& q, const std::string& what) {
+    try {
+      return q.in_ring(f.ring);
+    } catch (const std::invalid_argument&) {
+      for (std::size_t v = 0; v < q.ring()->size(); ++v) {
+        if (q.contains_variable(v) && !f.ring->index_of(q.ring()->variable(v))) {
+          throw std::invalid_argument("implicitize: " + what + " uses '" + q.ring()->variable(v) +
+                                      "', which is not a parameter");
+        }
+      }
+      throw;
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    f.numerators.push_back(move(p.numerators[i], "the formula for " + p.coordinates[i]));
+    f.denominators.push_back(p.denominators.empty() ? f.ring->one()
+                                                    : move(p.denominators[i], "the formula for " + p.coordinates[i]));
+    if (f.denominators.back().is_zero()) {
+      throw std::invalid_argument("implicitize: the denominator for " + p.coordinates[i] + " is zero");
+    }
+  }
+  for (const Polynomial& r : p.relations) f.relations.push_back(move(r, "a relation"));
+  return f;
+}
+
+// Cancels common factors and makes every denominator monic.
+void reduce_fractions(Fractions& f) {
+  for (std::size_t i = 0; i < f.numerators.size(); ++i) {
+    Polynomial& num = f.numerators[i];
+    Polynomial& den = f.denominators[i];
+    Polynomial g = gcd(num, den);
+    if (!g.is_constant()) {
+      num = *divide_exact(num, g);
+      den = *divide_exact(den, g);
+    }
+    Rational lc = den.leading_coefficient();
+    num /= lc;
+    den /= lc;
+  }
+}
+
+}  // namespace
+
+ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
+  Fractions f = prepare(p);
+  if (options.denominator == DenominatorStrategy::lcm) reduce_fractions(f);
+
+  // q: lcm of the reduced denominators (or their product).
+  Polynomial q = f.ring->one();
+  for (const Polynomial& den : f.denominators) {
+    if (den.is_constant()) continue;
+    q = options.denominator == DenominatorStrategy::lcm ? lcm(q, den) : q * den;
+  }
+
+  std::vector<std::string> taken = p.parameters;
+  taken.insert(taken.end(), p.coordinates.begin(), p.coordinates.end());
+  std::vector<std::string> eliminated;
+  if (!q.is_constant()) eliminated.push_back(internal_variable_name("y", taken));
+  eliminated.insert(eliminated.end(), p.parameters.begin(), p.parameters.end());
+  std::vector<std::string> names = eliminated;
+  names.insert(names.end(), p.coordinates.begin(), p.coordinates.end());
+  RingPtr ring = Ring::make(names, MonomialOrder::elimination(eliminated.size()));
+
+  std::vector<Polynomial> generators;
+  for (std::size_t i = 0; i < p.coordinates.size(); ++i) {
+    generators.push_back(f.denominators[i].in_ring(ring) * ring->var(p.coordinates[i]) - f.numerators[i].in_ring(ring));
+  }
+  if (!q.is_constant()) generators.push_back(1 - q.in_ring(ring) * ring->var(eliminated.front()));
+  for (const Polynomial& r : f.relations) generators.push_back(r.in_ring(ring));
+
+  GroebnerResult basis = eliminate(Ideal(ring, generators), eliminated, options.groebner);
+  ImplicitizationResult result;
+  result.status = basis.status;
+  result.message = basis.message;
+  result.ring = Ring::make(p.coordinates, MonomialOrder::degrevlex());
+  for (const Polynomial& g : basis.basis) result.generators.push_back(g.in_ring(result.ring).primitive());
+  result.stats = basis.stats;
+  result.seconds = basis.seconds;
+  return result;
+}
+
+Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
+  Fractions f = prepare(p);
+  // x_i = n_i / d_i; with D = prod d_i and e = deg F, D^e * F(n/d) is the
+  // polynomial sum over terms c * prod (n_i * D/d_i)^{a_i} * D^{e - |a|}.
+  Polynomial d_all = f.ring->one();
+  for (const Polynomial& den : f.denominators) d_all *= den;
+  std::vector<Polynomial> scaled;  // n_i * D / d_i
+  for (std::size_t i = 0; i < f.numerators.size(); ++i) {
+    scaled.push_back(f.numerators[i] * *divide_exact(d_all, f.denominators[i]));
+  }
+  const Ring& source = *implicit.ring();
+  std::vector<std::size_t> coordinate_of(source.size());
+  for (std::size_t v = 0; v < source.size(); ++v) {
+    auto it = std::find(p.coordinates.begin(), p.coordinates.end(), source.variable(v));
+    if (it == p.coordinates.end()) {
+      if (implicit.contains_variable(v)) {
+        throw std::invalid_argument("substitute_parametrization: '" + source.variable(v) + "' is not a coordinate");
+      }
+      coordinate_of[v] = p.coordinates.size();
+    } else {
+      coordinate_of[v] = static_cast<std::size_t>(it - p.coordinates.begin());
+    }
+  }
+  const auto degree = static_cast<unsigned>(implicit.total_degree());
+  Polynomial sum = f.ring->zero();
+  for (const Term& t : implicit.terms()) {
+    Polynomial product = f.ring->constant(t.coefficient);
+    for (std::size_t v = 0; v < source.size(); ++v) {
+      if (t.monomial[v] != 0) product *= pow(scaled[coordinate_of[v]], t.monomial[v]);
+    }
+    product *= pow(d_all, degree - static_cast<unsigned>(t.monomial.degree()));
+    sum += product;
+  }
+  if (f.relations.empty()) return sum;
+  GroebnerResult relations = groebner_basis(Ideal(f.ring, f.relations));
+  return normal_form(sum, relations.basis);
+}
+
+}  // namespace sdfwb::algebra

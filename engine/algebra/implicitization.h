@@ -1,0 +1,76 @@
+#pragma once
+// Implicitization: the implicit equations of a curve or surface given by a
+// rational parametrization, by elimination (Cox-Little-O'Shea 3.3):
+//
+// - polynomial x_i = f_i(t): eliminate t from <x_i - f_i> (Theorem 1.7);
+// - rational x_i = f_i/q_i: eliminate y and t from <q_i*x_i - f_i, 1 - q*y>
+//   (Theorem 1.8), with q the lcm of the reduced denominators (the same
+//   elimination ideal as with their product, at a fraction of the cost);
+// - relations among the parameters (c^2 + s^2 - 1 when c = cos(phi) and
+//   s = sin(phi) are kept as variables) are added to the ideal.
+//
+// The auxiliary y gets an internal name no user identifier can spell
+// (internal_variable_name), so it never collides with a parameter.
+
+#include "algebra/groebner.h"
+
+#include <string>
+#include <vector>
+
+namespace sdfwb::algebra {
+
+struct RationalParametrization {
+  /// Parameter names (u, v, t, ...; also the c/s or half-angle variables of
+  /// a converted trigonometric formula).
+  std::vector<std::string> parameters;
+  /// Coordinate names, in the order that ranks them (x > y > z).
+  std::vector<std::string> coordinates;
+  /// coordinates[i] = numerators[i] / denominators[i]. Polynomials of any ring
+  /// whose variables include every parameter that occurs; only parameters
+  /// may occur. An empty `denominators` means all 1.
+  std::vector<Polynomial> numerators;
+  std::vector<Polynomial> denominators;
+  /// Polynomials in the parameters that vanish on the parameter domain,
+  /// e.g. c^2 + s^2 - 1.
+  std::vector<Polynomial> relations;
+};
+
+enum class DenominatorStrategy {
+  lcm,      // q = lcm of the reduced denominators (the default)
+  product,  // q = product of the denominators as given (for comparison only)
+};
+
+struct ImplicitizationOptions {
+  GroebnerOptions groebner;  // budget and method
+  DenominatorStrategy denominator = DenominatorStrategy::lcm;
+};
+
+struct ImplicitizationResult {
+  Status status = Status::completed;
+  std::string message;  // empty when completed, else "gave up after ..."
+  /// The ring of the coordinates, ordered degrevlex with coordinates[0] largest.
+  RingPtr ring;
+  /// Reduced Groebner basis of the elimination ideal, each generator scaled
+  /// to a primitive integer polynomial with positive leading coefficient.
+  /// Exactly one generator: the implicit equation. Several: the variety is
+  /// cut out by all of them (e.g. a space curve). None: the image is dense.
+  std::vector<Polynomial> generators;
+  GroebnerStats stats;
+  double seconds = 0;
+
+  bool ok() const { return status == Status::completed; }
+};
+
+/// Throws std::invalid_argument with one clear line for malformed input
+/// (counts differ, a zero denominator, a coordinate named like a parameter,
+/// a variable that is not a parameter).
+ImplicitizationResult implicitize(const RationalParametrization& parametrization,
+                                  const ImplicitizationOptions& options = {});
+
+/// F evaluated on the parametrization, with denominators cleared and reduced
+/// modulo the relations: zero exactly when F vanishes on the parametrized set
+/// (F is a polynomial in the coordinates, by name). The result lives in the
+/// ring of the parameters (degrevlex).
+Polynomial substitute_parametrization(const Polynomial& f, const RationalParametrization& parametrization);
+
+}  // namespace sdfwb::algebra

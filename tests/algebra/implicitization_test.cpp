@@ -1,0 +1,122 @@
+// Textbook implicitizations (Cox, Little, O'Shea, "Ideals, Varieties, and
+// Algorithms", chapter 3) with known answers, and the property that the
+// result vanishes on the parametrization exactly.
+
+#include "algebra/implicitization.h"
+
+#include <gtest/gtest.h>
+
+namespace sdfwb::algebra {
+namespace {
+
+std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
+  std::vector<std::string> out;
+  for (const Polynomial& p : polys) out.push_back(p.to_string());
+  return out;
+}
+
+ImplicitizationResult checked(const RationalParametrization& p) {
+  ImplicitizationResult r = implicitize(p);
+  EXPECT_TRUE(r.ok()) << r.message;
+  for (const Polynomial& g : r.generators) {
+    EXPECT_TRUE(substitute_parametrization(g, p).is_zero()) << g;
+  }
+  return r;
+}
+
+TEST(Implicitization, TwistedCubic) {
+  auto t = Ring::make({"t"});
+  Polynomial tv = t->var("t");
+  RationalParametrization p{{"t"}, {"x", "y", "z"}, {tv, pow(tv, 2), pow(tv, 3)}, {}, {}};
+  ImplicitizationResult r = checked(p);
+  EXPECT_EQ(strings(r.generators), (std::vector<std::string>{"y^2 - x*z", "x*y - z", "x^2 - y"}));
+}
+
+TEST(Implicitization, TangentSurfaceOfTwistedCubic) {
+  // CLO 3.3: x = t + u, y = t^2 + 2tu, z = t^3 + 3t^2 u.
+  auto ring = Ring::make({"t", "u"});
+  Polynomial t = ring->var("t"), u = ring->var("u");
+  RationalParametrization p{{"t", "u"}, {"x", "y", "z"},
+                            {t + u, pow(t, 2) + 2 * t * u, pow(t, 3) + 3 * pow(t, 2) * u}, {}, {}};
+  ImplicitizationResult r = checked(p);
+  EXPECT_EQ(strings(r.generators),
+            (std::vector<std::string>{"3*x^2*y^2 - 4*x^3*z - 4*y^3 + 6*x*y*z - z^2"}));
+}
+
+TEST(Implicitization, WhitneyUmbrella) {
+  auto ring = Ring::make({"u", "v"});
+  Polynomial u = ring->var("u"), v = ring->var("v");
+  RationalParametrization p{{"u", "v"}, {"x", "y", "z"}, {u * v, v, pow(u, 2)}, {}, {}};
+  ImplicitizationResult r = checked(p);
+  EXPECT_EQ(strings(r.generators), (std::vector<std::string>{"y^2*z - x^2"}));
+}
+
+TEST(Implicitization, UnitSphereByStereographicProjection) {
+  auto ring = Ring::make({"u", "v"});
+  Polynomial u = ring->var("u"), v = ring->var("v");
+  Polynomial d = pow(u, 2) + pow(v, 2) + 1;
+  RationalParametrization p{{"u", "v"}, {"x", "y", "z"}, {2 * u, 2 * v, pow(u, 2) + pow(v, 2) - 1}, {d, d, d}, {}};
+  ImplicitizationResult r = checked(p);
+  EXPECT_EQ(strings(r.generators), (std::vector<std::string>{"x^2 + y^2 + z^2 - 1"}));
+  // The product of the denominators gives the same ideal.
+  ImplicitizationOptions product;
+  product.denominator = DenominatorStrategy::product;
+  EXPECT_EQ(implicitize(p, product).generators, r.generators);
+}
+
+TEST(Implicitization, EnneperSurface) {
+  // CLO 3.3 Exercise 11: x = 3u + 3uv^2 - u^3, y = 3v + 3u^2 v - v^3,
+  // z = 3u^2 - 3v^2; the implicit equation has degree 9.
+  auto ring = Ring::make({"u", "v"});
+  Polynomial u = ring->var("u"), v = ring->var("v");
+  RationalParametrization p{{"u", "v"},
+                            {"x", "y", "z"},
+                            {3 * u + 3 * u * pow(v, 2) - pow(u, 3), 3 * v + 3 * pow(u, 2) * v - pow(v, 3),
+                             3 * pow(u, 2) - 3 * pow(v, 2)},
+                            {},
+                            {}};
+  ImplicitizationResult r = checked(p);
+  ASSERT_EQ(r.generators.size(), 1u);
+  EXPECT_EQ(r.generators.front().total_degree(), 9u);
+  EXPECT_GT(r.generators.front().leading_coefficient(), 0);
+}
+
+TEST(Implicitization, CircleWithTrigRelation) {
+  // x = c, y = s with c^2 + s^2 = 1, and the half-angle form of the same circle.
+  auto ring = Ring::make({"c", "s"});
+  Polynomial c = ring->var("c"), s = ring->var("s");
+  RationalParametrization trig{{"c", "s"}, {"x", "y"}, {c, s}, {}, {pow(c, 2) + pow(s, 2) - 1}};
+  EXPECT_EQ(strings(checked(trig).generators), (std::vector<std::string>{"x^2 + y^2 - 1"}));
+  auto half = Ring::make({"t"});
+  Polynomial t = half->var("t");
+  RationalParametrization rational{{"t"}, {"x", "y"}, {1 - pow(t, 2), 2 * t}, {1 + pow(t, 2), 1 + pow(t, 2)}, {}};
+  EXPECT_EQ(strings(checked(rational).generators), (std::vector<std::string>{"x^2 + y^2 - 1"}));
+}
+
+TEST(Implicitization, ReducesFractionsBeforeTakingTheLcm) {
+  // x = t^2/t = t, y = 1/(t+1): the fraction for x cancels completely.
+  auto ring = Ring::make({"t"});
+  Polynomial t = ring->var("t");
+  RationalParametrization p{{"t"}, {"x", "y"}, {pow(t, 2), ring->one()}, {t, t + 1}, {}};
+  EXPECT_EQ(strings(checked(p).generators), (std::vector<std::string>{"x*y + y - 1"}));
+}
+
+TEST(Implicitization, AuxiliaryNamesNeverCollide) {
+  // A parameter called y (as the y of Theorem 1.8 is often written).
+  auto ring = Ring::make({"y"});
+  Polynomial y = ring->var("y");
+  RationalParametrization p{{"y"}, {"a", "b"}, {ring->one(), y}, {y, ring->one()}, {}};
+  EXPECT_EQ(strings(checked(p).generators), (std::vector<std::string>{"a*b - 1"}));
+}
+
+TEST(Implicitization, RejectsMalformedInput) {
+  auto ring = Ring::make({"u", "x"});
+  Polynomial u = ring->var("u");
+  EXPECT_THROW(implicitize({{"u"}, {"x", "y"}, {u}, {}, {}}), std::invalid_argument);
+  EXPECT_THROW(implicitize({{"u"}, {"u"}, {u}, {}, {}}), std::invalid_argument);
+  EXPECT_THROW(implicitize({{"u"}, {"y"}, {ring->var("x")}, {}, {}}), std::invalid_argument);
+  EXPECT_THROW(implicitize({{"u"}, {"y"}, {u}, {ring->zero()}, {}}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra
