@@ -1,0 +1,74 @@
+// Rendering for interactive callers: a render spread over many short calls
+// gives the same frame as one render() call, and a program built and warmed
+// up by the worker (a shared context on another thread) is adopted without
+// compiling again.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "gl/program_builder.h"
+#include "gl/progressive_render.h"
+#include "gl_test_support.h"
+#include "program/compile_scene.h"
+#include "scene/scene_json.h"
+
+namespace sdfwb {
+namespace {
+
+program::Program smallDefault(int aa) {
+    scene::Scene s = scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json");
+    return program::compileScene(s, {120, 70, aa});
+}
+
+class ProgressiveRenderTest : public test::GlTest {};
+
+TEST_F(ProgressiveRenderTest, ManySmallStepsGiveTheFrameOfOneRender) {
+    gl::GlRenderer renderer(gl());
+    program::Program p = smallDefault(2);
+    gl::GlRenderOutcome whole = renderer.render(p, {32, nullptr, {}});
+    gl::ProgressiveRender progressive(renderer, p, 32);
+    int calls = 0, tiles = 0;
+    while (!progressive.done()) {
+        tiles += static_cast<int>(progressive.advance(0.0).size());  // one draw per call
+        ++calls;
+    }
+    EXPECT_EQ(tiles, 4 * 3);                   // 120x70 in 32-pixel tiles
+    EXPECT_EQ(calls, tiles * 4);               // AA 2: four sub-sample draws per tile
+    EXPECT_DOUBLE_EQ(progressive.progress(), 1.0);
+    EXPECT_EQ(progressive.frame().color.rgb, whole.frame.color.rgb);
+    EXPECT_EQ(progressive.frame().steps, whole.frame.steps);
+    EXPECT_EQ(progressive.frame().coverage, whole.frame.coverage);
+}
+
+TEST_F(ProgressiveRenderTest, WorkerBuiltProgramIsAdoptedWithoutACompile) {
+    gl::GlRenderer renderer(gl());
+    program::Program p = smallDefault(1);
+    std::optional<gl::BuiltProgram> built;
+    {
+        gl::ProgramBuilder builder(context().createShared());
+        builder.request(p);
+        builder.request(p);  // a duplicate request is ignored
+        for (int i = 0; i < 6000 && !built; ++i) {
+            built = builder.take();
+            if (!built) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        ASSERT_TRUE(built) << "the worker did not finish within a minute";
+        EXPECT_FALSE(builder.busy());
+        EXPECT_FALSE(builder.take());
+    }
+    ASSERT_TRUE(built->linked) << built->error;
+    EXPECT_GT(built->seconds, 0.0);
+    renderer.adoptProgram(built->program, std::move(built->linked));
+    EXPECT_TRUE(renderer.hasProgram(p));
+    gl::GlRenderOutcome adopted = renderer.render(p);
+    EXPECT_EQ(renderer.counters().compiles, 0);
+
+    gl::GlRenderer fresh(gl());
+    EXPECT_EQ(fresh.render(p).frame.color.rgb, adopted.frame.color.rgb);
+    EXPECT_EQ(fresh.counters().compiles, 1);
+}
+
+}  // namespace
+}  // namespace sdfwb
