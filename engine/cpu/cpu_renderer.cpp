@@ -37,6 +37,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
     outcome.frame.color = image::Image(width, height);
     outcome.frame.steps.assign(outcome.frame.color.pixelCount(), 0.0f);
     outcome.frame.coverage.assign(outcome.frame.color.pixelCount(), 0.0f);
+    outcome.frame.depth.assign(outcome.frame.color.pixelCount(), 0.0f);
 
     const int tile = std::max(1, control.tileSize);
     const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
@@ -56,6 +57,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
             for (int x = x0; x < std::min(x0 + tile, width); ++x) {
                 vec3 sum(Real(0));
                 int steps = 0, hits = 0;
+                float depthSum = 0.0f;  // summed in float, in the GL backend's blending order
                 for (int m = 0; m < aa; ++m) {
                     for (int n = 0; n < aa; ++n) {
                         // pixel centres at half-integers, rows counted from the bottom as in GL
@@ -65,6 +67,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
                         sum = sum + result.color;
                         steps += result.steps;
                         hits += result.hit ? 1 : 0;
+                        depthSum = depthSum + (result.hit ? static_cast<float>(result.t) : 0.0f);
                     }
                 }
                 vec3 color = sum / Real(aa * aa);
@@ -74,6 +77,7 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
                 outcome.frame.color.rgb[3 * i + 2] = static_cast<float>(color.z);
                 outcome.frame.steps[i] = static_cast<float>(steps) / static_cast<float>(aa * aa);
                 outcome.frame.coverage[i] = static_cast<float>(hits) / static_cast<float>(aa * aa);
+                outcome.frame.depth[i] = hits > 0 ? depthSum / static_cast<float>(hits) : 0.0f;
             }
         }
         int done = ++tilesDone;

@@ -87,6 +87,7 @@ struct SampleResult {
     vec3 color;
     int steps;
     bool hit;
+    real t;  // march distance of the hit
 };
 
 // One sub-sample of one pixel, driven exactly as the GLSL backend's loop drives it.
@@ -104,7 +105,7 @@ inline SampleResult traceSample(const program::Program& program, const vec4* par
         }
         s = traceAdvance(s, field, light, settings);
     }
-    return SampleResult{s.color, s.steps, s.hit};
+    return SampleResult{s.color, s.steps, s.hit, s.t};
 }
 
 // The scene's constants converted to this precision once per render.

@@ -54,6 +54,7 @@ void readFrameRegion(const glcontext::GlFunctions& gl, const RenderTargets& targ
             for (size_t c = 0; c < 3; ++c) frame.color.rgb[3 * t + c] = color[s + c] / n;
             frame.steps[t] = stats[s] / n;
             frame.coverage[t] = stats[s + 1] / n;
+            frame.depth[t] = stats[s + 1] > 0.0f ? stats[s + 2] / stats[s + 1] : 0.0f;
         }
     }
 }
@@ -63,6 +64,7 @@ image::Frame blankFrame(int width, int height) {
     frame.color = image::Image(width, height);
     frame.steps.assign(frame.color.pixelCount(), 0.0f);
     frame.coverage.assign(frame.color.pixelCount(), 0.0f);
+    frame.depth.assign(frame.color.pixelCount(), 0.0f);
     return frame;
 }
 

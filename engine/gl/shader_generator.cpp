@@ -80,7 +80,7 @@ void main() {
         s = traceAdvance(s, field, light, settings);
     }
     outColor = vec4(s.color, 1.0);
-    outStats = vec4(float(s.steps), s.hit ? 1.0 : 0.0, 0.0, 1.0);
+    outStats = vec4(float(s.steps), s.hit ? 1.0 : 0.0, s.hit ? s.t : 0.0, 1.0);
 }
 )";
 

@@ -21,6 +21,7 @@ struct Frame {
     Image color;
     std::vector<float> steps;     // mean primary-march evaluations per sub-sample, per pixel
     std::vector<float> coverage;  // fraction of sub-samples that hit a surface, per pixel
+    std::vector<float> depth;     // mean march distance t of the sub-samples that hit (0 where none did)
 };
 
 struct FrameStats {

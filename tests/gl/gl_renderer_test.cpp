@@ -112,6 +112,7 @@ TEST_F(GlRendererTest, FrameMatchesTheCpuBackendLayout) {
     ASSERT_EQ(glFrame.frame.color.height, 27);
     EXPECT_EQ(glFrame.frame.coverage, cpuFrame.frame.coverage);
     EXPECT_EQ(glFrame.frame.steps, cpuFrame.frame.steps);
+    EXPECT_EQ(glFrame.frame.depth, cpuFrame.frame.depth);
     image::Comparison c = image::compareImages(glFrame.frame.color, cpuFrame.frame.color);
     EXPECT_LE(c.maxAbs, 1.0);
 }
