@@ -26,6 +26,39 @@ glm::dvec3 directionOf(double azimuth, double elevation) {
     return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
 }
 
+// A top view of the sky: the light's direction projected on the ground
+// plane (centre: straight overhead, rim: the horizon). Dragging aims it.
+WidgetEdit directionGizmo(glm::dvec3& direction) {
+    const float radius = 34.0f;
+    ImGui::TextDisabled("top view:\ndrag to aim\n(centre: overhead)");
+    ImGui::SameLine(130);
+    ImVec2 corner = ImGui::GetCursorScreenPos();
+    ImVec2 centre(corner.x + radius, corner.y + radius);
+    ImGui::InvisibleButton("gizmo", ImVec2(2 * radius, 2 * radius));
+    bool changed = false;
+    if (ImGui::IsItemActive()) {
+        ImVec2 mouse = ImGui::GetIO().MousePos;
+        double x = (mouse.x - centre.x) / radius, z = (mouse.y - centre.y) / radius;
+        double r = std::sqrt(x * x + z * z);
+        if (r > 0.995) {
+            x *= 0.995 / r;
+            z *= 0.995 / r;
+        }
+        direction = {x, std::sqrt(std::max(0.0, 1.0 - x * x - z * z)), z};
+        changed = true;
+    }
+    WidgetEdit edit{changed, ImGui::IsItemDeactivated()};
+    double length = std::sqrt(direction.x * direction.x + direction.y * direction.y + direction.z * direction.z);
+    ImVec2 point(centre.x + static_cast<float>(direction.x / length) * radius,
+                 centre.y + static_cast<float>(direction.z / length) * radius);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddCircleFilled(centre, radius, IM_COL32(40, 48, 60, 255));
+    draw->AddCircle(centre, radius, IM_COL32(120, 130, 150, 255));
+    draw->AddLine(centre, point, IM_COL32(255, 220, 120, 255), 2.0f);
+    draw->AddCircleFilled(point, 4.0f, direction.y >= 0 ? IM_COL32(255, 220, 120, 255) : IM_COL32(140, 120, 80, 255));
+    return edit;  // the button is the last item: commitEdit keys the drag by its id
+}
+
 }  // namespace
 
 void drawLightsPanel(Editor& editor, UiState& ui) {
@@ -51,6 +84,7 @@ void drawLightsPanel(Editor& editor, UiState& ui) {
             if (changed) light.direction = directionOf(angle[0], std::clamp(angle[1], -89.9, 89.9));
             set({changed, ImGui::IsItemDeactivatedAfterEdit()});
             set(dragVec3("direction", light.direction, 0.01, -1e6, 1e6));
+            set(directionGizmo(light.direction));
             set(colorEdit("colour", light.color));
             set(dragReal("softness k", light.softness, 0.05, 0.01, 1000.0, "%.2f"));
             if (ImGui::SmallButton("Remove")) {

@@ -120,7 +120,9 @@ void Viewport::updateGl(double budgetSeconds) {
         if (glJob_->done()) {
             const program::Program& done = glJob_->program();
             double samples = static_cast<double>(done.width) * done.height * done.aa * done.aa;
-            secondsPerSample_ = glJob_->drawSeconds() / std::max(1.0, samples);
+            double gpu = glJob_->gpuSeconds() > 0 ? glJob_->gpuSeconds() : glJob_->drawSeconds();
+            secondsPerSample_ = gpu / std::max(1.0, samples);
+            stats_.gpuSeconds = glJob_->gpuSeconds();
             finishStage(glJob_->frame(), glJob_->drawSeconds(), stage, true);
             glJob_.reset();
             ++glStage_;
@@ -162,6 +164,7 @@ void Viewport::updateCpu() {
 
 void Viewport::finishStage(const image::Frame& frame, double seconds, const Stage& stage, bool gl) {
     if (gl == glShown_) {
+        if (!gl) stats_.gpuSeconds = 0;
         stats_.width = frame.color.width;
         stats_.height = frame.color.height;
         stats_.aa = stage.aa;

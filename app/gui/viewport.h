@@ -27,6 +27,7 @@ struct ViewportStats {
     int aa = 1;
     double renderSeconds = 0;            // of the last finished stage
     double compileSeconds = 0;           // of the last adopted program
+    double gpuSeconds = 0;               // GL timer queries of the last finished GL stage
     image::FrameStats frame;             // of the last finished stage
     std::string status;                  // "compiling shader", "refining 40%", "done"
     int compiles = 0;                    // programs adopted from the builder

@@ -76,7 +76,8 @@ void statsOverlay(AppState& app, ImVec2 corner) {
     if (ImGui::Begin("##stats", nullptr, flags)) {
         bool gl = app.ui.backend == ui::ViewBackend::Gl || app.ui.compare != ui::CompareMode::Off;
         ImGui::Text("frame %.1f ms   backend %s", app.frameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
-        ImGui::Text("image %d x %d, AA %d, %.0f ms", s.width, s.height, s.aa, s.renderSeconds * 1000.0);
+        ImGui::Text("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa,
+                    s.renderSeconds * 1000.0, s.gpuSeconds * 1000.0);
         ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
                     s.frame.hitRatio * 100.0);
         ImGui::Text("GL %s", viewport.glInfo().renderer.c_str());

@@ -12,7 +12,8 @@ ProgressiveRender::ProgressiveRender(GlRenderer& renderer, program::Program prog
       gl_(renderer.functions()),
       program_(std::move(program)),
       targets_(makeRenderTargets(gl_, program_.width, program_.height)),
-      frame_(blankFrame(program_.width, program_.height)) {
+      frame_(blankFrame(program_.width, program_.height)),
+      timer_(glcontext::makeQuery(gl_)) {
     const float zero[4] = {0, 0, 0, 0};
     gl_.ClearBufferfv(GL_COLOR, 0, zero);
     gl_.ClearBufferfv(GL_COLOR, 1, zero);
@@ -44,11 +45,16 @@ std::vector<TileRect> ProgressiveRender::advance(double budgetSeconds) {
     do {
         const TileRect& tile = tiles_[next_];
         gl_.Scissor(tile.x, program_.height - (tile.y + tile.h), tile.w, tile.h);
+        gl_.BeginQuery(GL_TIME_ELAPSED, timer_.get());
         renderer_.drawSubsample(subsample_ / aa, subsample_ % aa);
+        gl_.EndQuery(GL_TIME_ELAPSED);
         // Wait for this draw only: the budget is measured on finished work.
         GLsync fence = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         gl_.ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 10'000'000'000ull);
         gl_.DeleteSync(fence);
+        GLuint64 nanoseconds = 0;
+        gl_.GetQueryObjectui64v(timer_.get(), GL_QUERY_RESULT, &nanoseconds);
+        gpuSeconds_ += static_cast<double>(nanoseconds) * 1e-9;
         if (++subsample_ == aa * aa) {
             readFrameRegion(gl_, targets_, tile.x, tile.y, tile.w, tile.h, aa * aa, frame_);
             finished.push_back(tile);

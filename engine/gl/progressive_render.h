@@ -25,7 +25,8 @@ public:
     // Makes the float targets for program.width x program.height.
     ProgressiveRender(GlRenderer& renderer, program::Program program, int tileSize = 64);
 
-    // Issues draws, waiting for each with a fence, until `budgetSeconds` have
+    // Issues draws, waiting for each with a fence (and timing it with a GL
+    // timer query), until `budgetSeconds` have
     // passed or the render is complete; returns the tiles completed in this
     // call (already read into frame()). At least one draw runs per call.
     std::vector<TileRect> advance(double budgetSeconds);
@@ -36,8 +37,10 @@ public:
     // The frame so far: finished tiles hold their pixels, the rest zeros.
     const image::Frame& frame() const { return frame_; }
     const program::Program& program() const { return program_; }
-    // Seconds spent waiting for draws so far.
+    // Wall-clock seconds spent in advance() so far.
     double drawSeconds() const { return drawSeconds_; }
+    // GPU seconds of the draws so far (GL timer queries).
+    double gpuSeconds() const { return gpuSeconds_; }
 
 private:
     GlRenderer& renderer_;
@@ -48,7 +51,9 @@ private:
     size_t next_ = 0;       // tile being drawn
     int subsample_ = 0;     // next sub-sample of that tile, 0 .. aa*aa-1
     image::Frame frame_;
+    glcontext::GlObject timer_;  // GL_TIME_ELAPSED query around each draw
     double drawSeconds_ = 0;
+    double gpuSeconds_ = 0;
 };
 
 }  // namespace sdfwb::gl
