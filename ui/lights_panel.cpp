@@ -30,8 +30,8 @@ glm::dvec3 directionOf(double azimuth, double elevation) {
 // plane (centre: straight overhead, rim: the horizon). Dragging aims it.
 WidgetEdit directionGizmo(glm::dvec3& direction) {
     const float radius = 34.0f;
-    ImGui::TextDisabled("top view:\ndrag to aim\n(centre: overhead)");
-    ImGui::SameLine(130);
+    ImGui::TextDisabled("top view,\ndrag to aim");
+    ImGui::SameLine(110);
     ImVec2 corner = ImGui::GetCursorScreenPos();
     ImVec2 centre(corner.x + radius, corner.y + radius);
     ImGui::InvisibleButton("gizmo", ImVec2(2 * radius, 2 * radius));
@@ -80,7 +80,7 @@ void drawLightsPanel(Editor& editor, UiState& ui) {
             };
             glm::dvec2 angles = anglesOf(light.direction);
             double angle[2] = {angles.x, angles.y};
-            bool changed = ImGui::DragScalarN("azimuth, elevation", ImGuiDataType_Double, angle, 2, 0.5f);
+            bool changed = ImGui::DragScalarN("az / el (deg)", ImGuiDataType_Double, angle, 2, 0.5f, nullptr, nullptr, "%.1f");
             if (changed) light.direction = directionOf(angle[0], std::clamp(angle[1], -89.9, 89.9));
             set({changed, ImGui::IsItemDeactivatedAfterEdit()});
             set(dragVec3("direction", light.direction, 0.01, -1e6, 1e6));

@@ -31,6 +31,7 @@ constexpr CommandSpec kCommands[] = {
     {"backend", 1, 1, "backend cpu|gl"},
     {"compare", 1, 1, "compare off|side|diff"},
     {"heat", 1, 1, "heat on|off"},
+    {"panel", 1, 1, "panel node|materials|lights|render|environment|library"},
     {"camera", 3, 3, "camera <azimuth> <elevation> <distance>"},
     {"wait", 1, 1, "wait <frames>|idle"},
     {"screenshot", 1, 1, "screenshot <file.png>"},
@@ -249,6 +250,15 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         if (a[0] != "on" && a[0] != "off") return fail(c, "must be on or off (got " + a[0] + ")");
         ui.stepHeat = a[0] == "on";
         return done();
+    }
+    if (c.name == "panel") {
+        for (size_t i = 0; i < std::size(kInspectorTabNames); ++i) {
+            if (a[0] == kInspectorTabNames[i]) {
+                ui.showTab = static_cast<InspectorTab>(i);
+                return done();
+            }
+        }
+        return fail(c, "must be node, materials, lights, render, environment or library (got " + a[0] + ")");
     }
     if (c.name == "camera") {
         double v[3];

@@ -3,6 +3,7 @@
 // view options, and the messages shown to the user. Panels read and change it;
 // the scene itself changes only through the Editor.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,9 @@ namespace sdfwb::ui {
 
 enum class ViewBackend { Gl, Cpu };
 enum class CompareMode { Off, SideBySide, Difference };
+// The inspector's tabs, in their order on screen.
+enum class InspectorTab { Node, Materials, Lights, Render, Environment, Library };
+inline constexpr const char* kInspectorTabNames[] = {"node", "materials", "lights", "render", "environment", "library"};
 
 struct Message {
     enum class Level { Info, Error };
@@ -25,6 +29,8 @@ struct UiState {
     bool showStats = true;       // statistics overlay on the viewport
     bool stepHeat = false;       // show the step-count heat image instead of colour
     bool showThumbnails = true;  // per-node thumbnails in the scene tree
+    // A tab to bring to the front on the next frame (scripts), then cleared.
+    std::optional<InspectorTab> showTab;
 
     // Newest last; the status bar shows the newest, the log window all.
     std::vector<Message> messages;

@@ -129,30 +129,36 @@ void inspectorPanel(AppState& app, ImVec2 origin, float height) {
     ImGui::SetNextWindowSize(ImVec2(kSideWidth, height));
     if (ImGui::Begin("Inspector", nullptr, kPanelFlags)) {
         if (ImGui::BeginTabBar("tabs")) {
-            if (ImGui::BeginTabItem("Node")) {
+            using Tab = ui::InspectorTab;
+            auto tab = [&app](const char* label, Tab which) {
+                ImGuiTabItemFlags flags = app.ui.showTab == which ? ImGuiTabItemFlags_SetSelected : 0;
+                return ImGui::BeginTabItem(label, nullptr, flags);
+            };
+            if (tab("Node", Tab::Node)) {
                 ui::drawInspector(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Materials")) {
+            if (tab("Materials", Tab::Materials)) {
                 ui::drawMaterialsPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Lights")) {
+            if (tab("Lights", Tab::Lights)) {
                 ui::drawLightsPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Render")) {
+            if (tab("Render", Tab::Render)) {
                 ui::drawRenderSettingsPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Environment")) {
+            if (tab("Environment", Tab::Environment)) {
                 ui::drawEnvironmentPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem("Library")) {
+            if (tab("Library", Tab::Library)) {
                 ui::drawLibraryPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }
+            app.ui.showTab.reset();
             ImGui::EndTabBar();
         }
     }
