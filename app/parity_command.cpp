@@ -57,6 +57,7 @@ int runParity(const ParityArguments& a) {
         std::string table = parity::tableHeader(anyHard);
         std::cout << "GL renderer: " << context->info().renderer << "\n" << table << std::flush;
         bool allPass = true;
+        std::string polynomialNotes;
         for (const auto& file : files) {
             scene::Scene scene = scene::loadSceneFile(file);
             parity::ParityOptions options{.width = width, .height = height, .aa = a.aa, .reference = isHardCase(file)};
@@ -65,10 +66,18 @@ int runParity(const ParityArguments& a) {
             std::string row = parity::tableRow(name, result, anyHard);
             std::cout << row << std::flush;
             table += row;
+            if (result.cpuPolynomial && result.glPolynomial) {
+                polynomialNotes += parity::describeAccuracy(name + " CPU vs first-root reference", *result.cpuPolynomial) + "\n" +
+                                   parity::describeAccuracy(name + " GL vs first-root reference", *result.glPolynomial) + "\n";
+            }
             allPass = allPass && (options.reference ? result.passesHardGate : result.passes);
         }
+        if (!polynomialNotes.empty()) {
+            std::cout << "\n" << polynomialNotes;
+        }
         if (!a.report.empty()) {
-            io::writeTextAtomically(a.report, "GL renderer: " + context->info().renderer + "\n\n" + table);
+            io::writeTextAtomically(a.report, "GL renderer: " + context->info().renderer + "\n\n" + table +
+                                                  (polynomialNotes.empty() ? "" : "\n" + polynomialNotes));
         }
         return allPass ? 0 : 1;
     } catch (const scene::SceneError& error) {

@@ -52,6 +52,13 @@ ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer
         result.glVsReference = image::compareImages(glFrame.frame.color, reference.frame.color);
         result.passesHardGate = hardGate(result);
     }
+
+    if (polynomialScene(scene)) {
+        program::Program single = program::compileScene(scene, {options.width, options.height, 1});
+        std::vector<std::optional<double>> reference = referenceDepths(scene, options.width, options.height);
+        result.cpuPolynomial = measureAccuracy(reference, cpu::renderCpu(single).frame);
+        result.glPolynomial = measureAccuracy(reference, glRenderer.render(single).frame);
+    }
     return result;
 }
 

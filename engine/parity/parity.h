@@ -8,6 +8,7 @@
 
 #include "gl/gl_renderer.h"
 #include "image/compare.h"
+#include "parity/polynomial_reference.h"
 #include "scene/scene.h"
 
 namespace sdfwb::parity {
@@ -39,6 +40,11 @@ struct ParityResult {
     image::Comparison glVsReference;
     double referenceHitRatio = 0;
     bool passesHardGate = false;  // see hardGate()
+
+    // For a polynomial surface (polynomialScene()): each backend at AA 1 against
+    // the first-root reference (polynomial_reference.h).
+    std::optional<PolynomialAccuracy> cpuPolynomial;
+    std::optional<PolynomialAccuracy> glPolynomial;
 };
 
 // Renders `scene` with the CPU (float) backend and with `glRenderer` (its
