@@ -136,7 +136,8 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
   for (auto& [v, gcdOverLcm] : scales) gcdOverLcm = 1 / gcdOverLcm;
 
   // The ring: user parameters in order, each angle replaced by its new parameters.
-  TrigConversion result;
+  TrigConversion conversion;
+  algebra::RationalParametrization& result = conversion.parametrization;
   std::vector<std::string> taken = g.variables();
   taken.insert(taken.end(), {"x", "y", "z"});
   std::vector<std::vector<std::string>> replacements(g.variables().size());
@@ -154,7 +155,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
       taken.push_back(replacements[v].back());
       result.parameters.push_back(replacements[v].back());
     }
-    result.angles.push_back({name, scales[v], replacements[v]});
+    conversion.angles.push_back({name, scales[v], replacements[v]});
   }
   const algebra::RingPtr ring = algebra::Ring::make(result.parameters);
   FractionArithmetic arithmetic(ring);
@@ -223,7 +224,11 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
     result.numerators.push_back(std::move(numerator));
     result.denominators.push_back(std::move(denominator));
   }
-  return result;
+  return conversion;
+}
+
+TrigConversion parseParametrization(std::string_view source, TrigStrategy strategy) {
+  return toRationalParametrization(compileParametricEquations(source), strategy);
 }
 
 }  // namespace sdfwb::expr

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "algebra/polynomial.h"
+#include "algebra/implicitization.h"
 #include "expr/formula.h"
 
 namespace sdfwb::expr {
@@ -33,11 +33,11 @@ struct AngleSubstitution {
 };
 
 struct TrigConversion {
-  std::vector<std::string> parameters;          // the ring's variables: user parameters, then new ones
-  std::vector<std::string> coordinates;         // x, y, z as given, in that order
-  std::vector<algebra::Polynomial> numerators;  // coordinate_i = numerators[i] / denominators[i]
-  std::vector<algebra::Polynomial> denominators;
-  std::vector<algebra::Polynomial> relations;   // c^2 + s^2 - 1 per angle (CosSinRelation)
+  // The input of algebra::implicitize. Its parameters are the user's
+  // parameters that occur outside sin/cos/tan, in order of first use, with
+  // each angle replaced in place by its new parameters; its polynomials share
+  // one ring of those parameters; relations are empty for HalfAngle.
+  algebra::RationalParametrization parametrization;
   std::vector<AngleSubstitution> angles;
 };
 
@@ -46,6 +46,14 @@ struct TrigConversion {
 // parameter used both inside and outside sin/cos/tan, or a non-rational
 // function such as sqrt.
 TrigConversion toRationalParametrization(const ParametricEquations& equations, TrigStrategy strategy);
+
+// compileParametricEquations then toRationalParametrization: parametric text
+// such as "x = u*v; y = v; z = u^2" to what algebra::implicitize takes. The
+// default is CosSinRelation: with algebra::implicitize (Nov 2026) the torus
+// takes about 1 ms either way, but the Moebius strip and the cross-cap finish
+// in about 1 ms with it and give up after 60 s with HalfAngle.
+TrigConversion parseParametrization(std::string_view source,
+                                    TrigStrategy strategy = TrigStrategy::CosSinRelation);
 
 // The largest multiple |n| of an angle after the substitution (cos(n*psi)
 // expands to degree n).

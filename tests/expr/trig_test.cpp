@@ -9,8 +9,10 @@
 #include <functional>
 #include <random>
 
+#include "algebra/implicitization.h"
 #include "algebra/ring.h"
 #include "expr/identifier.h"
+#include "expr/to_algebra.h"
 #include "expr/trig.h"
 #include "formula_eval.h"
 
@@ -51,9 +53,9 @@ struct Sample {
 Sample sample(const ParametricEquations& eq, const TrigConversion& c, std::mt19937& rng) {
   std::uniform_int_distribution<int> numerator(-40, 40);
   Sample s;
-  s.parameters.resize(c.parameters.size());
+  s.parameters.resize(c.parametrization.parameters.size());
   auto indexOf = [&](const std::string& name) {
-    return std::find(c.parameters.begin(), c.parameters.end(), name) - c.parameters.begin();
+    return std::find(c.parametrization.parameters.begin(), c.parametrization.parameters.end(), name) - c.parametrization.parameters.begin();
   };
   for (const std::string& name : eq.graph.variables()) {
     Rational t(numerator(rng), 16);
@@ -81,7 +83,7 @@ void checkConversion(std::string_view source, TrigStrategy strategy, const Impli
   SCOPED_TRACE(std::string(source) + (strategy == TrigStrategy::HalfAngle ? " (half-angle)" : " (c, s)"));
   const ParametricEquations eq = compileParametricEquations(source);
   const TrigConversion c = toRationalParametrization(eq, strategy);
-  ASSERT_EQ(c.coordinates, (std::vector<std::string>{"x", "y", "z"}));
+  ASSERT_EQ(c.parametrization.coordinates, (std::vector<std::string>{"x", "y", "z"}));
   for (const AngleSubstitution& a : c.angles) {
     for (const std::string& name : a.replacements) EXPECT_FALSE(isIdentifier(name)) << name;
   }
@@ -92,12 +94,12 @@ void checkConversion(std::string_view source, TrigStrategy strategy, const Impli
   std::mt19937 rng(17);
   for (int i = 0; i < 25; ++i) {
     const Sample s = sample(eq, c, rng);
-    for (const algebra::Polynomial& relation : c.relations) EXPECT_EQ(algebra::evaluate(relation, s.parameters), 0);
+    for (const algebra::Polynomial& relation : c.parametrization.relations) EXPECT_EQ(algebra::evaluate(relation, s.parameters), 0);
     Rational xyz[3];
     for (int k = 0; k < 3; ++k) {
-      const Rational denominator = algebra::evaluate(c.denominators[k], s.parameters);
+      const Rational denominator = algebra::evaluate(c.parametrization.denominators[k], s.parameters);
       ASSERT_NE(denominator, 0);
-      xyz[k] = algebra::evaluate(c.numerators[k], s.parameters) / denominator;
+      xyz[k] = algebra::evaluate(c.parametrization.numerators[k], s.parameters) / denominator;
     }
     EXPECT_EQ(implicit(xyz[0], xyz[1], xyz[2]), 0);
     const auto expected = evaluate(s.userValues);
@@ -115,16 +117,16 @@ TEST(Trig, ClassicSurfacesBothStrategies) {
 
 TEST(Trig, HalfAngleParametersAndDenominators) {
   const TrigConversion c = toRationalParametrization(compileParametricEquations(kTorus), TrigStrategy::HalfAngle);
-  ASSERT_EQ(c.parameters.size(), 2u);
-  EXPECT_EQ(c.parameters[0], "$t_v");
-  EXPECT_EQ(c.parameters[1], "$t_u");
-  EXPECT_TRUE(c.relations.empty());
-  const auto ring = algebra::Ring::make(c.parameters);
+  ASSERT_EQ(c.parametrization.parameters.size(), 2u);
+  EXPECT_EQ(c.parametrization.parameters[0], "$t_v");
+  EXPECT_EQ(c.parametrization.parameters[1], "$t_u");
+  EXPECT_TRUE(c.parametrization.relations.empty());
+  const auto ring = algebra::Ring::make(c.parametrization.parameters);
   const auto tv = ring->var("$t_v"), tu = ring->var("$t_u");
   // z = sin(v)/2 = t/(1 + t^2); x and y share the lcm (1 + tu^2)(1 + tv^2).
-  EXPECT_EQ(c.numerators[2].in_ring(ring), tv);
-  EXPECT_EQ(c.denominators[2].in_ring(ring), 1 + tv * tv);
-  EXPECT_EQ(c.denominators[0].in_ring(ring), (1 + tu * tu) * (1 + tv * tv));
+  EXPECT_EQ(c.parametrization.numerators[2].in_ring(ring), tv);
+  EXPECT_EQ(c.parametrization.denominators[2].in_ring(ring), 1 + tv * tv);
+  EXPECT_EQ(c.parametrization.denominators[0].in_ring(ring), (1 + tu * tu) * (1 + tv * tv));
 }
 
 TEST(Trig, RationalMultiplesAreRescaled) {
@@ -132,37 +134,37 @@ TEST(Trig, RationalMultiplesAreRescaled) {
   ASSERT_EQ(c.angles.size(), 1u);
   EXPECT_EQ(c.angles[0].parameter, "u");
   EXPECT_EQ(c.angles[0].scale, Rational(2));  // u = 2 psi: cos(u/2) = cos psi, cos(u) = cos 2psi
-  EXPECT_EQ(c.parameters, (std::vector<std::string>{"v", "$c_u", "$s_u"}));  // in order of first use
-  ASSERT_EQ(c.relations.size(), 1u);
-  EXPECT_EQ(c.relations[0].to_string(), "$c_u^2 + $s_u^2 - 1");
+  EXPECT_EQ(c.parametrization.parameters, (std::vector<std::string>{"v", "$c_u", "$s_u"}));  // in order of first use
+  ASSERT_EQ(c.parametrization.relations.size(), 1u);
+  EXPECT_EQ(c.parametrization.relations[0].to_string(), "$c_u^2 + $s_u^2 - 1");
   // Only the gcd of the multiples matters: cos(2v) and sin(4v) use psi = 2v, v = psi/2.
   const TrigConversion d = toRationalParametrization(compileParametricEquations("x = cos(2*v); y = sin(4*v)"),
                                                      TrigStrategy::CosSinRelation);
   EXPECT_EQ(d.angles[0].scale, Rational(1, 2));
-  EXPECT_EQ(d.numerators[0].to_string(), "$c_v");
-  EXPECT_EQ(d.numerators[1].to_string(), "2*$c_v*$s_v");
+  EXPECT_EQ(d.parametrization.numerators[0].to_string(), "$c_v");
+  EXPECT_EQ(d.parametrization.numerators[1].to_string(), "2*$c_v*$s_v");
 }
 
 TEST(Trig, SumsTangentsAndPlainParameters) {
   const TrigConversion sum = toRationalParametrization(compileParametricEquations("x = cos(u - v)"),
                                                        TrigStrategy::CosSinRelation);
-  EXPECT_EQ(sum.numerators[0].to_string(), "$c_u*$c_v + $s_u*$s_v");
+  EXPECT_EQ(sum.parametrization.numerators[0].to_string(), "$c_u*$c_v + $s_u*$s_v");
   const TrigConversion tangent = toRationalParametrization(compileParametricEquations("x = tan(u)"),
                                                            TrigStrategy::HalfAngle);
-  EXPECT_EQ(tangent.numerators[0].to_string(), "-2*$t_u");
-  EXPECT_EQ(tangent.denominators[0].to_string(), "$t_u^2 - 1");
+  EXPECT_EQ(tangent.parametrization.numerators[0].to_string(), "-2*$t_u");
+  EXPECT_EQ(tangent.parametrization.denominators[0].to_string(), "$t_u^2 - 1");
   const TrigConversion plain = toRationalParametrization(compileParametricEquations("x = u*v; y = v; z = u^2"),
                                                          TrigStrategy::HalfAngle);
-  EXPECT_EQ(plain.parameters, (std::vector<std::string>{"u", "v"}));
-  EXPECT_EQ(plain.numerators[2].to_string(), "u^2");
-  EXPECT_EQ(plain.denominators[0].to_string(), "1");
+  EXPECT_EQ(plain.parametrization.parameters, (std::vector<std::string>{"u", "v"}));
+  EXPECT_EQ(plain.parametrization.numerators[2].to_string(), "u^2");
+  EXPECT_EQ(plain.parametrization.denominators[0].to_string(), "1");
 }
 
 TEST(Trig, InternalNamesAvoidUserNames) {
   // A user parameter may be called t_u; the new one is "$t_u", which it cannot be.
   const TrigConversion c = toRationalParametrization(compileParametricEquations("x = cos(u); y = t_u"),
                                                      TrigStrategy::HalfAngle);
-  EXPECT_EQ(c.parameters, (std::vector<std::string>{"$t_u", "t_u"}));
+  EXPECT_EQ(c.parametrization.parameters, (std::vector<std::string>{"$t_u", "t_u"}));
 }
 
 std::string trigError(std::string_view source) {
@@ -178,6 +180,30 @@ TEST(Trig, Errors) {
   EXPECT_EQ(trigError("x = u; y = cos(u)"), "column 1: 'u' is used both inside and outside sin/cos/tan, so the parametrization is not rational");
   EXPECT_EQ(trigError("x = sqrt(u)"), "column 5: 'sqrt' is not a polynomial or rational function");
   EXPECT_EQ(trigError("x = cos(u) + cos(u/101)"), "column 5: the multiples of 'u' are too far apart for an exact conversion (at most 100 times the smallest)");
+}
+
+// End to end with algebra::implicitize: the textbook equations come out.
+void expectImplicitEquation(std::string_view source, TrigStrategy strategy, std::string_view expected) {
+  SCOPED_TRACE(std::string(source));
+  const TrigConversion c = parseParametrization(source, strategy);
+  algebra::ImplicitizationOptions options;
+  options.groebner.budget.time_limit_seconds = 30;  // milliseconds expected; never hang the suite
+  const algebra::ImplicitizationResult r = algebra::implicitize(c.parametrization, options);
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_EQ(r.generators.size(), 1u);
+  EXPECT_EQ(r.generators[0], parsePolynomials(expected, r.ring)[0].primitive());
+  EXPECT_TRUE(algebra::substitute_parametrization(r.generators[0], c.parametrization).is_zero());
+}
+
+TEST(Trig, ImplicitizesClassicSurfaces) {
+  for (TrigStrategy strategy : {TrigStrategy::HalfAngle, TrigStrategy::CosSinRelation}) {
+    expectImplicitEquation(kTorus, strategy, "(x^2 + y^2 + z^2 + 4 - 1/4)^2 - 16*(x^2 + y^2)");
+  }
+  // The default strategy; half-angle takes minutes on these two (see trig.h).
+  expectImplicitEquation(kMoebius, TrigStrategy::CosSinRelation,
+                         "-y + x^2*y + y^3 - 2*x*z - 2*x^2*z - 2*y^2*z + y*z^2");
+  expectImplicitEquation(kCrossCap, TrigStrategy::CosSinRelation, "4*x^2*(x^2 + y^2 + z^2 + z) + y^2*(y^2 + z^2 - 1)");
+  expectImplicitEquation("x = u*v; y = v; z = u^2", TrigStrategy::CosSinRelation, "y^2*z - x^2");
 }
 
 }  // namespace
