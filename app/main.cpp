@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/algebra_commands.h"
 #include "app/compare_command.h"
 #include "app/gui/gui_command.h"
 #include "app/parity_command.h"
@@ -41,7 +42,17 @@ int main(int argc, char** argv) {
     CLI::App* parity = sdfwb::app::addParityCommand(app, parityArguments);
     sdfwb::app::gui::GuiArguments guiArguments;
     CLI::App* gui = sdfwb::app::gui::addGuiCommand(app, guiArguments);
+    sdfwb::app::ImplicitizeArguments implicitizeArguments;
+    CLI::App* implicitize = sdfwb::app::addImplicitizeCommand(app, implicitizeArguments);
+    sdfwb::app::GroebnerArguments groebnerArguments;
+    CLI::App* groebner = sdfwb::app::addGroebnerCommand(app, groebnerArguments);
     CLI11_PARSE(app, argc, argv);
+    if (implicitize->parsed()) {
+        return sdfwb::app::runImplicitize(implicitizeArguments);
+    }
+    if (groebner->parsed()) {
+        return sdfwb::app::runGroebner(groebnerArguments);
+    }
     if (gui->parsed()) {
         int code = sdfwb::app::gui::runGui(guiArguments);
         return code == sdfwb::app::gui::kNoWindow ? 1 : code;

@@ -133,3 +133,43 @@ TEST_F(Cli, HelpDescribesEveryRenderOption) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, ImplicitizePrintsTheEquationAndItsJson) {
+    ProcessResult text = run("implicitize \"x = u*v; y = v; z = u^2\"");
+    ASSERT_EQ(text.exitCode, 0) << text.output;
+    EXPECT_EQ(text.output.substr(0, text.output.find('\n')), "y^2*z - x^2 = 0");
+    ProcessResult json = run("implicitize \"x = u*v; y = v; z = u^2\" --json");
+    ASSERT_EQ(json.exitCode, 0) << json.output;
+    EXPECT_EQ(json.output.find("{\"generators\":[\"y^2*z - x^2\"],\"degree\":3,\"terms\":2,\"seconds\":"), 0u)
+        << json.output;
+}
+
+TEST_F(Cli, ImplicitizeConvertsTrigonometryExactly) {
+    ProcessResult torus = run("implicitize \"x = (2 + cos(v))*cos(u); y = (2 + cos(v))*sin(u); z = sin(v)\"");
+    ASSERT_EQ(torus.exitCode, 0) << torus.output;
+    EXPECT_NE(torus.output.find("x^4 + 2*x^2*y^2 + y^4 + 2*x^2*z^2 + 2*y^2*z^2 + z^4 - 10*x^2 - 10*y^2 + 6*z^2 + 9 = 0"),
+              std::string::npos)
+        << torus.output;
+}
+
+TEST_F(Cli, GroebnerPrintsAReducedBasisInInputSyntax) {
+    ProcessResult r = run("groebner \"x^2 + y^2 + z^2 - 1; x - y; y - z^2\" --vars x,y,z --order degrevlex --json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("{\"basis\":[\"x - y\",\"z^2 - y\",\"y^2 + 1/2*y - 1/2\"],\"seconds\":"), 0u) << r.output;
+}
+
+TEST_F(Cli, AlgebraInputErrorsAreOneLineWithAColumn) {
+    ProcessResult sqrt = run("implicitize \"x = sqrt(u); y = v; z = u\"");
+    EXPECT_EQ(sqrt.exitCode, 2);
+    EXPECT_EQ(sqrt.output, "sdf-workbench implicitize: column 5: 'sqrt' is not a polynomial or rational function\n");
+    ProcessResult vars = run("groebner \"x^2 - y\" --vars x,sin");
+    EXPECT_EQ(vars.exitCode, 2);
+    EXPECT_EQ(vars.output, "sdf-workbench groebner: --vars: 'sin': 'sin' is the name of a built-in function\n");
+    ProcessResult unknown = run("groebner \"x^2 - w\" --vars x,y");
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.output.find("'w'"), std::string::npos) << unknown.output;
+}
+
+}  // namespace
