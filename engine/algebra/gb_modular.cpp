@@ -2,14 +2,13 @@
 
 #include "algebra/gb_convert.h"
 #include "algebra/gb_engine.h"
+#include "algebra/gb_fglm.h"
 
 #include <stdexcept>
 
 namespace sdfwb::algebra::gb {
 
 namespace {
-
-using ModPoly = Poly<std::uint32_t>;
 
 std::uint32_t mod_p(const mpz_class& value, std::uint32_t p) {
   return static_cast<std::uint32_t>(mpz_fdiv_ui(value.get_mpz_t(), p));
@@ -43,15 +42,8 @@ struct Group {
   std::vector<IntPoly> polys;
   mpz_class modulus = 1;
   std::size_t primes = 0;
+  std::size_t next_attempt = 0;  // reconstruct once primes reaches this
 };
-
-bool same_leads(const Layout& layout, const std::vector<IntPoly>& a, const std::vector<ModPoly>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!layout.equal(a[i].mons.data(), b[i].mons.data())) return false;
-  }
-  return true;
-}
 
 // acc (mod M) and next (mod p) -> residues mod M*p over the union of supports.
 IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& modulus, const ModPoly& next,
@@ -111,16 +103,28 @@ Monomial to_monomial(const Layout& layout, const Word* mon) {
   return m;
 }
 
-// Rational reconstruction of every coefficient; nullopt if one fails.
-std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const Group& group, const RingPtr& ring) {
+// Rational reconstruction of every coefficient; nullopt if one fails. The
+// coefficient that failed is remembered in `probe` and tried first next
+// time, so that while the modulus is still too small a failed attempt costs
+// one reconstruction instead of a pass over all coefficients.
+std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const Group& group, const RingPtr& ring,
+                                                   std::pair<std::size_t, std::size_t>& probe) {
   const std::size_t stride = layout.stride();
+  mpq_class q;
+  if (probe.first < group.polys.size() && probe.second < group.polys[probe.first].size() &&
+      !rational_reconstruction(group.polys[probe.first].coeffs[probe.second], group.modulus, q)) {
+    return std::nullopt;
+  }
   std::vector<Polynomial> out;
-  for (const IntPoly& g : group.polys) {
+  for (std::size_t i = 0; i < group.polys.size(); ++i) {
+    const IntPoly& g = group.polys[i];
     std::vector<Term> terms;
     for (std::size_t t = 0; t < g.size(); ++t) {
       if (mpz_sgn(g.coeffs[t].get_mpz_t()) == 0) continue;
-      mpq_class q;
-      if (!rational_reconstruction(g.coeffs[t], group.modulus, q)) return std::nullopt;
+      if (!rational_reconstruction(g.coeffs[t], group.modulus, q)) {
+        probe = {i, t};
+        return std::nullopt;
+      }
       terms.push_back(Term{to_monomial(layout, g.mon(t, stride)), std::move(q)});
     }
     out.emplace_back(ring, std::move(terms));
@@ -226,15 +230,79 @@ bool rational_reconstruction(const mpz_class& a, const mpz_class& modulus, mpq_c
   return true;
 }
 
+namespace {
+
+// Collects bases modulo successive primes and proposes candidates over Q.
+class Lifter {
+ public:
+  Lifter(const Layout& layout, RingPtr ring) : layout_(layout), ring_(std::move(ring)) {}
+
+  /// The current candidate, if it reduces modulo p to `basis`.
+  const std::vector<Polynomial>* agreeing(const std::vector<ModPoly>& basis, std::uint32_t p) const {
+    if (!candidate_ || candidate_group_ != group_of(basis)) return nullptr;
+    return agrees_modulo(layout_, *candidate_, basis, p) ? &*candidate_ : nullptr;
+  }
+
+  /// Adds a basis modulo p to its group (primes with the same leading
+  /// monomials); the largest group proposes the candidate.
+  void add(const std::vector<ModPoly>& basis, std::uint32_t p) {
+    std::size_t index = group_of(basis);
+    if (index == groups_.size()) {
+      groups_.emplace_back();
+      leads_.push_back(leads(basis));
+    }
+    accumulate(layout_, groups_[index], basis, p);
+    std::size_t largest = 0;
+    for (std::size_t g = 1; g < groups_.size(); ++g) {
+      if (groups_[g].primes > groups_[largest].primes) largest = g;
+    }
+    if (largest == index) {
+      // Reconstruction costs about as much as a pass of Euclid over every
+      // coefficient, so it is attempted on a geometric schedule (at most 1/8
+      // more primes than strictly needed) rather than after every prime.
+      Group& group = groups_[index];
+      if (group.primes >= group.next_attempt) {
+        candidate_ = reconstruct(layout_, group, ring_, probe_);
+        candidate_group_ = index;
+        group.next_attempt = group.primes + 1 + group.primes / 8;
+      }
+    } else if (candidate_group_ != largest) {
+      candidate_.reset();
+    }
+  }
+
+ private:
+  std::vector<Word> leads(const std::vector<ModPoly>& basis) const {
+    std::vector<Word> out;
+    for (const ModPoly& g : basis) out.insert(out.end(), g.mons.begin(), g.mons.begin() + layout_.stride());
+    return out;
+  }
+  std::size_t group_of(const std::vector<ModPoly>& basis) const {
+    std::vector<Word> l = leads(basis);
+    std::size_t index = 0;
+    while (index < leads_.size() && leads_[index] != l) ++index;
+    return index;
+  }
+
+  const Layout& layout_;
+  RingPtr ring_;
+  std::vector<Group> groups_;
+  std::vector<std::vector<Word>> leads_;  // leading monomials of each group
+  std::optional<std::vector<Polynomial>> candidate_;
+  std::size_t candidate_group_ = 0;
+  std::pair<std::size_t, std::size_t> probe_{0, 0};  // see reconstruct
+};
+
+constexpr std::size_t kMaxPrimes = 100000;
+
+}  // namespace
+
 std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, const RingPtr& ring,
                                          BudgetMonitor& monitor, GroebnerStats& stats) {
   const Layout layout(*ring);
-  std::vector<Group> groups;
-  std::vector<std::vector<Word>> group_leads;  // flat lead monomials per group
-  std::optional<std::vector<Polynomial>> candidate;
-  std::size_t candidate_group = 0;
+  Lifter lifter(layout, ring);
   std::uint32_t p = 0x80000000u;
-  for (std::size_t attempt = 0; attempt < 100000; ++attempt) {
+  for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
     p = previous_prime(p);
     const ModularDomain domain{p};
     std::vector<ModPoly> reduced(input.size());
@@ -243,35 +311,58 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
     if (!usable) continue;
     Engine<ModularDomain> engine(layout, domain, monitor);
     std::vector<ModPoly> basis = engine.groebner(std::move(reduced));
-    if (stats.primes == 0) {
-      stats = engine.stats();  // the counters of one modular run
-    }
+    if (stats.primes == 0) stats = engine.stats();  // the counters of one modular run
     ++stats.primes;
-
-    std::vector<Word> leads;
-    for (const ModPoly& g : basis) leads.insert(leads.end(), g.mons.begin(), g.mons.begin() + layout.stride());
-    std::size_t index = 0;
-    while (index < groups.size() && !(group_leads[index] == leads)) ++index;
-    if (index == groups.size()) {
-      groups.emplace_back();
-      group_leads.push_back(leads);
+    if (const std::vector<Polynomial>* candidate = lifter.agreeing(basis, p)) {
+      if (verify(layout, *candidate, input, monitor, stats)) return *candidate;
     }
-    if (candidate && candidate_group == index && agrees_modulo(layout, *candidate, basis, p)) {
-      if (verify(layout, *candidate, input, monitor, stats)) return std::move(*candidate);
-    }
-    accumulate(layout, groups[index], basis, p);
-    std::size_t largest = 0;
-    for (std::size_t g = 1; g < groups.size(); ++g) {
-      if (groups[g].primes > groups[largest].primes) largest = g;
-    }
-    if (largest == index) {
-      candidate = reconstruct(layout, groups[index], ring);
-      candidate_group = index;
-    } else if (candidate_group != largest) {
-      candidate.reset();
-    }
+    lifter.add(basis, p);
   }
-  throw std::logic_error("modular Groebner basis: no stable result after 100000 primes");
+  throw std::logic_error("modular Groebner basis: no verified result after many primes");
+}
+
+std::optional<std::vector<Polynomial>> modular_fglm(const std::vector<Polynomial>& basis, const RingPtr& target,
+                                                    BudgetMonitor& monitor, GroebnerStats& stats) {
+  if (basis.empty()) return std::nullopt;  // the zero ideal is not zero-dimensional
+  const RingPtr& source_ring = basis.front().ring();
+  const Layout source(*source_ring);
+  const Layout layout(*target);
+  std::vector<IntPoly> packed;
+  std::vector<const Word*> leads;
+  for (const Polynomial& g : basis) packed.push_back(to_integer_poly(g, source));
+  for (const IntPoly& g : packed) leads.push_back(g.mons.data());
+  const std::optional<std::size_t> dimension = staircase_size(source, leads);
+  if (!dimension) return std::nullopt;
+  const std::optional<MultiplicationTable> table = multiplication_table(source, packed, monitor);
+
+  // Exact check of a candidate L: every element reduces to 0 by the basis
+  // (so <L> is inside the ideal) and L's staircase has the quotient's
+  // dimension. Then dim Q[x]/<L> <= |staircase(L)| = dim Q[x]/I <= dim
+  // Q[x]/<L>, so <L> = I and L is a Groebner basis of it.
+  auto verified = [&](const std::vector<Polynomial>& candidate) {
+    std::vector<IntPoly> target_packed;
+    std::vector<const Word*> target_leads;
+    for (const Polynomial& l : candidate) target_packed.push_back(to_integer_poly(l, layout));
+    for (const IntPoly& l : target_packed) target_leads.push_back(l.mons.data());
+    if (staircase_size(layout, target_leads) != dimension) return false;
+    return all_in_ideal(*table, layout, target_packed, monitor);
+  };
+
+  Lifter lifter(layout, target);
+  std::uint32_t p = 0x80000000u;
+  for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
+    p = previous_prime(p);
+    const ModularDomain domain{p};
+    std::optional<std::vector<ModPoly>> modular = fglm_modulo(*table, layout, domain, monitor);
+    if (!modular) continue;
+    const std::vector<ModPoly>& converted = *modular;
+    ++stats.primes;
+    if (const std::vector<Polynomial>* candidate = lifter.agreeing(converted, p)) {
+      if (verified(*candidate)) return *candidate;
+    }
+    lifter.add(converted, p);
+  }
+  throw std::logic_error("modular FGLM: no verified result after many primes");
 }
 
 }  // namespace sdfwb::algebra::gb

@@ -24,6 +24,7 @@
 #include "algebra/groebner_stats.h"
 #include "algebra/polynomial.h"
 
+#include <optional>
 #include <vector>
 
 namespace sdfwb::algebra::gb {
@@ -33,6 +34,13 @@ namespace sdfwb::algebra::gb {
 /// BudgetExceeded at a safe point when the budget runs out.
 std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, const RingPtr& ring,
                                          BudgetMonitor& monitor, GroebnerStats& stats);
+
+/// The reduced basis in `target` (same variables, another order) of the
+/// ideal whose reduced basis over Q is `basis`, by FGLM modulo primes,
+/// lifted to Q and verified exactly (see modular_fglm in the .cpp); nullopt
+/// when the ideal is not zero-dimensional.
+std::optional<std::vector<Polynomial>> modular_fglm(const std::vector<Polynomial>& basis, const RingPtr& target,
+                                                    BudgetMonitor& monitor, GroebnerStats& stats);
 
 /// The first prime below `below` (deterministic Miller-Rabin; below < 2^32).
 std::uint32_t previous_prime(std::uint32_t below);

@@ -25,7 +25,23 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
   BudgetMonitor monitor(options.budget);
   if (options.method != GroebnerMethod::rational) {
     try {
-      result.basis = gb::modular_groebner(ideal.generators(), ideal.ring(), monitor, result.stats);
+      const RingPtr& ring = ideal.ring();
+      result.method = "modular";
+      if (options.method == GroebnerMethod::automatic && ring->order().kind() == MonomialOrder::Kind::lex &&
+          ring->size() > 1) {
+        // Lex bases of zero-dimensional ideals: degrevlex, then FGLM.
+        RingPtr degrevlex = ring->with_order(MonomialOrder::degrevlex());
+        std::vector<Polynomial> generators;
+        for (const Polynomial& g : ideal.generators()) generators.push_back(g.in_ring(degrevlex));
+        std::vector<Polynomial> first = gb::modular_groebner(generators, degrevlex, monitor, result.stats);
+        if (auto converted = gb::modular_fglm(first, ring, monitor, result.stats)) {
+          result.basis = std::move(*converted);
+          result.method = "modular+fglm";
+        }
+      }
+      if (result.method == "modular") {
+        result.basis = gb::modular_groebner(ideal.generators(), ring, monitor, result.stats);
+      }
     } catch (const BudgetExceeded& e) {
       result.status = e.status;
       result.message = e.message;
@@ -34,6 +50,7 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
     result.seconds = monitor.elapsed_seconds();
     return result;
   }
+  result.method = "rational";
   const gb::Layout layout(*ideal.ring());
   const gb::IntegerDomain domain;
   IntegerEngine engine(layout, domain, monitor);
@@ -48,6 +65,23 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
     result.basis.clear();
   }
   result.stats = engine.stats();
+  result.seconds = monitor.elapsed_seconds();
+  return result;
+}
+
+GroebnerResult change_order(const std::vector<Polynomial>& basis, const RingPtr& target,
+                            const GroebnerOptions& options) {
+  GroebnerResult result;
+  result.method = "modular+fglm";
+  BudgetMonitor monitor(options.budget);
+  try {
+    std::optional<std::vector<Polynomial>> converted = gb::modular_fglm(basis, target, monitor, result.stats);
+    if (!converted) throw std::invalid_argument("change_order: the ideal is not zero-dimensional");
+    result.basis = std::move(*converted);
+  } catch (const BudgetExceeded& e) {
+    result.status = e.status;
+    result.message = e.message;
+  }
   result.seconds = monitor.elapsed_seconds();
   return result;
 }

@@ -21,7 +21,8 @@
 namespace sdfwb::algebra {
 
 enum class GroebnerMethod {
-  /// The fastest exact method we have (currently: modular).
+  /// The fastest exact method we have: modular; for lex, first degrevlex and,
+  /// if the ideal is zero-dimensional, FGLM to lex.
   automatic,
   /// Bases modulo several primes, lifted to Q and verified over Q
   /// (see gb_modular.h for what the verification proves).
@@ -42,6 +43,7 @@ struct GroebnerResult {
   std::vector<Polynomial> basis;   // empty unless completed
   GroebnerStats stats;
   double seconds = 0;              // the computation's own wall-clock time
+  std::string method;              // what ran: "modular", "modular+fglm", "rational"
 
   bool ok() const { return status == Status::completed; }
 };
@@ -49,6 +51,12 @@ struct GroebnerResult {
 /// Buchberger's algorithm (sugar selection, Gebauer-Moeller criteria) with
 /// exact fraction-free arithmetic, in the ideal's ring and order.
 GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options = {});
+
+/// The reduced basis in `target` (same variable names, another order) of the
+/// zero-dimensional ideal whose reduced Groebner basis is `basis`, by FGLM.
+/// Throws std::invalid_argument when the ideal is not zero-dimensional.
+GroebnerResult change_order(const std::vector<Polynomial>& basis, const RingPtr& target,
+                            const GroebnerOptions& options = {});
 
 /// Normal form (remainder) of f by a Groebner basis of its ring, fully
 /// reduced; it is the unique representative of f modulo the ideal. The result

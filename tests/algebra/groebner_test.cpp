@@ -49,3 +49,40 @@ TEST(Groebner, NormalFormIsExact) {
 
 }  // namespace
 }  // namespace sdfwb::algebra
+
+namespace sdfwb::algebra {
+namespace {
+
+TEST(Groebner, LexByFglmMatchesDirectLex) {
+  // Zero-dimensional lex goes through degrevlex + FGLM; the rational method
+  // computes lex directly. Both must give the same reduced basis.
+  auto r = Ring::make({"x", "y", "z"}, MonomialOrder::lex());
+  Polynomial x = r->var("x"), y = r->var("y"), z = r->var("z");
+  Ideal i(r, {pow(x, 2) + pow(y, 2) + pow(z, 2) - 1, x - y + Rational(1, 3) * z, pow(y, 2) - z});
+  GroebnerResult fast = groebner_basis(i);
+  ASSERT_TRUE(fast.ok());
+  EXPECT_EQ(fast.method, "modular+fglm");
+  GroebnerOptions rational;
+  rational.method = GroebnerMethod::rational;
+  EXPECT_EQ(fast.basis, groebner_basis(i, rational).basis);
+  EXPECT_TRUE(is_reduced_groebner_basis(fast.basis));
+}
+
+TEST(Groebner, ChangeOrder) {
+  auto drl = Ring::make({"x", "y"});
+  Polynomial x = drl->var("x"), y = drl->var("y");
+  GroebnerResult start = groebner_basis(Ideal(drl, {pow(x, 2) - y, pow(y, 2) - x + 1}));
+  ASSERT_TRUE(start.ok());
+  RingPtr lex = drl->with_order(MonomialOrder::lex());
+  GroebnerResult converted = change_order(start.basis, lex);
+  ASSERT_TRUE(converted.ok());
+  std::vector<std::string> text;
+  for (const Polynomial& g : converted.basis) text.push_back(g.to_string());
+  EXPECT_EQ(text, (std::vector<std::string>{"y^4 + 2*y^2 - y + 1", "x - y^2 - 1"}));
+  // A curve is not zero-dimensional.
+  GroebnerResult curve = groebner_basis(Ideal(drl, {pow(x, 2) - y}));
+  EXPECT_THROW(change_order(curve.basis, lex), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra

@@ -1,0 +1,382 @@
+#include "algebra/gb_fglm.h"
+
+#include "algebra/gb_engine.h"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+namespace sdfwb::algebra::gb {
+
+namespace {
+
+using Exponents = std::vector<Word>;
+
+Exponents exponents_of(const Layout& layout, const Word* mon) {
+  return Exponents(layout.exponents(mon), layout.exponents(mon) + layout.vars());
+}
+
+bool divisible_by_any(const Exponents& m, const std::vector<Exponents>& leads) {
+  for (const Exponents& lead : leads) {
+    bool divides = true;
+    for (std::size_t v = 0; v < m.size() && divides; ++v) divides = lead[v] <= m[v];
+    if (divides) return true;
+  }
+  return false;
+}
+
+// Standard monomials of the leads, each with its index.
+std::map<Exponents, std::size_t> staircase(const std::vector<Exponents>& leads, std::size_t vars,
+                                           BudgetMonitor& monitor) {
+  std::map<Exponents, std::size_t> index;
+  std::vector<Exponents> queue;
+  Exponents one(vars, 0);
+  if (divisible_by_any(one, leads)) return index;
+  index.emplace(one, 0);
+  queue.push_back(one);
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    for (std::size_t v = 0; v < vars; ++v) {
+      Exponents m = queue[next];
+      ++m[v];
+      if (index.count(m) || divisible_by_any(m, leads)) continue;
+      index.emplace(m, index.size());
+      queue.push_back(std::move(m));
+    }
+    Progress progress;
+    progress.stage = "fglm staircase";
+    monitor.tick(progress, index.size() * vars * sizeof(Word));
+  }
+  return index;
+}
+
+void to_packed(const Layout& layout, const Exponents& e, Word* out) {
+  std::copy(e.begin(), e.end(), out + layout.keys());
+  layout.encode_keys(out);
+}
+
+}  // namespace
+
+std::optional<std::size_t> staircase_size(const Layout& layout, const std::vector<const Word*>& leads) {
+  std::vector<Exponents> lead_exponents;
+  for (const Word* lead : leads) lead_exponents.push_back(exponents_of(layout, lead));
+  for (std::size_t v = 0; v < layout.vars(); ++v) {
+    bool pure = false;
+    for (const Exponents& e : lead_exponents) {
+      bool only_v = e[v] > 0;
+      for (std::size_t w = 0; w < layout.vars() && only_v; ++w) only_v = w == v || e[w] == 0;
+      pure = pure || only_v;
+    }
+    if (!pure) return std::nullopt;
+  }
+  const Budget unlimited;
+  BudgetMonitor monitor(unlimited);
+  return staircase(lead_exponents, layout.vars(), monitor).size();
+}
+
+std::optional<MultiplicationTable> multiplication_table(const Layout& source, const std::vector<Poly<mpz_class>>& basis,
+                                                        BudgetMonitor& monitor) {
+  std::vector<const Word*> leads;
+  for (const Poly<mpz_class>& g : basis) leads.push_back(g.mons.data());
+  if (!staircase_size(source, leads)) return std::nullopt;
+  const std::size_t vars = source.vars();
+  std::vector<Exponents> lead_exponents;
+  for (const Word* lead : leads) lead_exponents.push_back(exponents_of(source, lead));
+  const std::map<Exponents, std::size_t> index = staircase(lead_exponents, vars, monitor);
+
+  MultiplicationTable table;
+  table.vars = vars;
+  table.stairs.resize(index.size());
+  for (const auto& [e, i] : index) table.stairs[i] = e;
+  const std::size_t dim = table.dim();
+  table.columns.resize(vars * dim);
+
+  const IntegerDomain integers;
+  Engine<IntegerDomain> reducer(source, integers, monitor);
+  reducer.set_basis(basis);
+  std::vector<Word> packed(source.stride());
+  std::size_t bytes = 0;
+  for (std::size_t b = 0; b < dim; ++b) {
+    for (std::size_t v = 0; v < vars; ++v) {
+      Exponents m = table.stairs[b];
+      ++m[v];
+      MultiplicationTable::Column& column = table.columns[v * dim + b];
+      auto found = index.find(m);
+      if (found != index.end()) {
+        column.rows.push_back(static_cast<std::uint32_t>(found->second));
+        column.numerators.emplace_back(1);
+        continue;
+      }
+      Poly<mpz_class> monomial;
+      to_packed(source, m, packed.data());
+      monomial.push(packed.data(), source.stride(), mpz_class(1));
+      // normal_form with a scale returns scale * NF exactly.
+      Poly<mpz_class> nf = reducer.normal_form(std::move(monomial), &column.denominator);
+      for (std::size_t t = 0; t < nf.size(); ++t) {
+        column.rows.push_back(static_cast<std::uint32_t>(index.at(exponents_of(source, nf.mon(t, source.stride())))));
+        column.numerators.push_back(std::move(nf.coeffs[t]));
+      }
+      bytes += column.rows.size() * (sizeof(std::uint32_t) + sizeof(mpz_class));
+      Progress progress;
+      progress.stage = "fglm matrices";
+      monitor.tick(progress, bytes);
+    }
+  }
+  return table;
+}
+
+namespace {
+
+// An exact normal form: vector / denominator, with integer entries.
+struct ExactVector {
+  std::vector<mpz_class> entries;
+  mpz_class denominator = 1;
+};
+
+// Divides entries and denominator by their common content.
+void remove_content(ExactVector& v) {
+  mpz_class g = v.denominator;
+  for (const mpz_class& e : v.entries) {
+    if (g == 1) return;
+    if (sgn(e) != 0) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), e.get_mpz_t());
+  }
+  if (g == 1) return;
+  for (mpz_class& e : v.entries) mpz_divexact(e.get_mpz_t(), e.get_mpz_t(), g.get_mpz_t());
+  mpz_divexact(v.denominator.get_mpz_t(), v.denominator.get_mpz_t(), g.get_mpz_t());
+}
+
+}  // namespace
+
+bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const std::vector<Poly<mpz_class>>& candidate,
+                  BudgetMonitor& monitor) {
+  const std::size_t vars = table.vars;
+  const std::size_t dim = table.dim();
+  if (dim == 0) return true;  // the unit ideal contains everything
+  // Integer matrices N_v = D_v * M_v, D_v the lcm of the column denominators.
+  std::vector<mpz_class> scale(vars, 1);
+  for (std::size_t v = 0; v < vars; ++v) {
+    for (std::size_t b = 0; b < dim; ++b) {
+      const mpz_class& d = table.columns[v * dim + b].denominator;
+      mpz_lcm(scale[v].get_mpz_t(), scale[v].get_mpz_t(), d.get_mpz_t());
+    }
+  }
+  std::map<Exponents, ExactVector> cache;
+  ExactVector one;
+  one.entries.assign(dim, 0);
+  one.entries[0] = 1;
+  cache.emplace(Exponents(vars, 0), std::move(one));
+  std::size_t bytes = 0;
+  // NF(m) = M_v * NF(m / x_v) for the last variable v of m, so that powers
+  // of one variable share their chain of parents.
+  std::function<const ExactVector&(const Exponents&)> normal_form = [&](const Exponents& m) -> const ExactVector& {
+    auto found = cache.find(m);
+    if (found != cache.end()) return found->second;
+    std::size_t v = vars;
+    while (m[v - 1] == 0) --v;
+    --v;
+    Exponents parent_exponents = m;
+    --parent_exponents[v];
+    const ExactVector& parent = normal_form(parent_exponents);
+    ExactVector out;
+    out.entries.assign(dim, 0);
+    mpz_class factor;
+    for (std::size_t b = 0; b < dim; ++b) {
+      if (sgn(parent.entries[b]) == 0) continue;
+      const MultiplicationTable::Column& column = table.columns[v * dim + b];
+      mpz_divexact(factor.get_mpz_t(), scale[v].get_mpz_t(), column.denominator.get_mpz_t());
+      factor *= parent.entries[b];
+      for (std::size_t k = 0; k < column.rows.size(); ++k) {
+        mpz_addmul(out.entries[column.rows[k]].get_mpz_t(), factor.get_mpz_t(), column.numerators[k].get_mpz_t());
+      }
+    }
+    out.denominator = parent.denominator * scale[v];
+    remove_content(out);
+    for (const mpz_class& e : out.entries) bytes += mpz_size(e.get_mpz_t()) * sizeof(mp_limb_t);
+    Progress progress;
+    progress.stage = "fglm verification";
+    monitor.check(progress, bytes);
+    return cache.emplace(m, std::move(out)).first->second;
+  };
+
+  for (const Poly<mpz_class>& l : candidate) {
+    // sum c_t NF(t) = 0  <=>  sum c_t (L / d_t) w_t = 0 with L = lcm d_t.
+    mpz_class common = 1;
+    std::vector<const ExactVector*> forms;
+    for (std::size_t t = 0; t < l.size(); ++t) {
+      const Word* e = target.exponents(l.mon(t, target.stride()));
+      forms.push_back(&normal_form(Exponents(e, e + vars)));
+      mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), forms.back()->denominator.get_mpz_t());
+    }
+    std::vector<mpz_class> sum(dim, 0);
+    mpz_class factor;
+    for (std::size_t t = 0; t < l.size(); ++t) {
+      mpz_divexact(factor.get_mpz_t(), common.get_mpz_t(), forms[t]->denominator.get_mpz_t());
+      factor *= l.coeffs[t];
+      for (std::size_t r = 0; r < dim; ++r) {
+        if (sgn(forms[t]->entries[r]) != 0) {
+          mpz_addmul(sum[r].get_mpz_t(), factor.get_mpz_t(), forms[t]->entries[r].get_mpz_t());
+        }
+      }
+    }
+    for (const mpz_class& x : sum) {
+      if (sgn(x) != 0) return false;
+    }
+  }
+  return true;
+}
+
+std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table, const Layout& target,
+                                                const ModularDomain& domain, BudgetMonitor& monitor) {
+  const std::size_t vars = table.vars;
+  const std::size_t dim = table.dim();
+  const std::uint32_t p = domain.p;
+  const std::size_t stride_t = target.stride();
+  if (dim == 0) {  // the unit ideal
+    ModPoly one;
+    std::vector<Word> m(stride_t, 0);
+    one.push(m.data(), stride_t, 1);
+    return std::vector<ModPoly>{one};
+  }
+
+  // The table modulo p.
+  struct Entry {
+    std::uint32_t row, value;
+  };
+  std::vector<std::vector<Entry>> matrix(table.columns.size());
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    const MultiplicationTable::Column& column = table.columns[c];
+    const auto den = static_cast<std::uint32_t>(mpz_fdiv_ui(column.denominator.get_mpz_t(), p));
+    if (den == 0) return std::nullopt;
+    const std::uint32_t inverse = domain.inverse(den);
+    for (std::size_t k = 0; k < column.rows.size(); ++k) {
+      std::uint32_t value;
+      domain.mul(value, static_cast<std::uint32_t>(mpz_fdiv_ui(column.numerators[k].get_mpz_t(), p)), inverse);
+      if (value != 0) matrix[c].push_back({column.rows[k], value});
+    }
+  }
+  const std::size_t matrix_bytes = vars * dim * sizeof(Entry);
+
+  // Walk the monomials in increasing target order.
+  struct Row {
+    std::vector<std::uint32_t> vector;       // normalized: 1 at pivot
+    std::vector<std::uint32_t> combination;  // over the new staircase
+    std::size_t pivot;
+  };
+  std::vector<Row> rows;
+  std::vector<Exponents> new_stairs;
+  std::vector<std::vector<std::uint32_t>> new_stair_vectors;
+  std::vector<Exponents> new_leads;
+  std::vector<ModPoly> result;
+
+  auto packed = [&](const Exponents& e) {
+    std::vector<Word> w(stride_t);
+    to_packed(target, e, w.data());
+    return w;
+  };
+  auto by_target_order = [&](const std::vector<Word>& a, const std::vector<Word>& b) {
+    return target.compare(a.data(), b.data()) < 0;
+  };
+  // Candidates (packed in the target layout) with the staircase element and
+  // variable they come from.
+  std::map<std::vector<Word>, std::pair<std::size_t, std::size_t>, decltype(by_target_order)> candidates(
+      by_target_order);
+  candidates.emplace(packed(Exponents(vars, 0)), std::make_pair(SIZE_MAX, 0));
+
+  while (!candidates.empty()) {
+    const std::vector<Word> m_packed = candidates.begin()->first;
+    const auto origin = candidates.begin()->second;
+    candidates.erase(candidates.begin());
+    const Exponents m(target.exponents(m_packed.data()), target.exponents(m_packed.data()) + vars);
+    if (divisible_by_any(m, new_leads)) continue;
+    Progress progress;
+    progress.stage = "fglm";
+    progress.basis_size = result.size();
+    progress.pairs_left = candidates.size();
+    monitor.tick(progress, matrix_bytes + rows.size() * 2 * dim * sizeof(std::uint32_t));
+
+    // v = normal form of m, as M_var * NF(parent).
+    std::vector<std::uint32_t> v(dim, 0);
+    if (origin.first == SIZE_MAX) {
+      v[0] = 1;  // stairs[0] is the monomial 1
+    } else {
+      const std::vector<std::uint32_t>& parent = new_stair_vectors[origin.first];
+      // Products are below 2^62, so an accumulator below p takes three more
+      // before it must be reduced.
+      std::vector<std::uint64_t> acc(dim, 0);
+      std::vector<std::uint8_t> pending(dim, 0);
+      for (std::size_t b = 0; b < dim; ++b) {
+        if (parent[b] == 0) continue;
+        const std::uint64_t factor = parent[b];
+        for (const Entry& e : matrix[origin.second * dim + b]) {
+          acc[e.row] += factor * e.value;
+          if (++pending[e.row] == 3) {
+            acc[e.row] %= p;
+            pending[e.row] = 0;
+          }
+        }
+      }
+      for (std::size_t r = 0; r < dim; ++r) v[r] = static_cast<std::uint32_t>(acc[r] % p);
+    }
+    const std::vector<std::uint32_t> normal_form = v;
+
+    // Reduce by the echelon rows, tracking v = NF(m) - sum a_j NF(S_j).
+    std::vector<std::uint32_t> a(new_stairs.size(), 0);
+    for (const Row& row : rows) {
+      const std::uint32_t f = v[row.pivot];
+      if (f == 0) continue;
+      for (std::size_t r = 0; r < dim; ++r) {
+        if (row.vector[r] == 0) continue;
+        std::uint32_t t;
+        domain.mul(t, f, row.vector[r]);
+        v[r] = v[r] >= t ? v[r] - t : v[r] + (p - t);
+      }
+      for (std::size_t j = 0; j < row.combination.size(); ++j) {
+        if (row.combination[j] == 0) continue;
+        std::uint32_t t;
+        domain.mul(t, f, row.combination[j]);
+        domain.add(a[j], t);
+      }
+    }
+    auto pivot = std::find_if(v.begin(), v.end(), [](std::uint32_t c) { return c != 0; });
+    if (pivot == v.end()) {
+      // NF(m) = sum a_j NF(S_j): m - sum a_j S_j is in the ideal.
+      std::vector<std::pair<std::vector<Word>, std::uint32_t>> terms;
+      for (std::size_t j = 0; j < a.size(); ++j) {
+        if (a[j] != 0) terms.emplace_back(packed(new_stairs[j]), p - a[j]);
+      }
+      std::sort(terms.begin(), terms.end(), [&](const auto& x, const auto& y) { return by_target_order(y.first, x.first); });
+      ModPoly g;
+      g.push(m_packed.data(), stride_t, 1);
+      for (auto& [w, c] : terms) g.push(w.data(), stride_t, std::uint32_t{c});
+      result.push_back(std::move(g));
+      new_leads.push_back(m);
+      continue;
+    }
+    // A new standard monomial; record the normalized row.
+    const std::size_t index = new_stairs.size();
+    if (index >= dim) throw std::logic_error("fglm: staircase larger than the quotient's dimension");
+    new_stairs.push_back(m);
+    new_stair_vectors.push_back(normal_form);
+    Row row;
+    row.pivot = static_cast<std::size_t>(pivot - v.begin());
+    const std::uint32_t inverse = domain.inverse(v[row.pivot]);
+    row.vector = std::move(v);
+    for (std::uint32_t& c : row.vector) domain.mul(c, c, inverse);
+    row.combination.assign(index + 1, 0);
+    for (std::size_t j = 0; j < a.size(); ++j) {
+      const std::uint32_t negated = a[j] == 0 ? 0 : p - a[j];
+      domain.mul(row.combination[j], negated, inverse);
+    }
+    row.combination[index] = inverse;
+    rows.push_back(std::move(row));
+    for (std::size_t var = 0; var < vars; ++var) {
+      Exponents next = m;
+      ++next[var];
+      candidates.emplace(packed(next), std::make_pair(index, var));
+    }
+  }
+  return result;
+}
+
+}  // namespace sdfwb::algebra::gb
