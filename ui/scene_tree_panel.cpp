@@ -30,21 +30,33 @@ std::string rowLabel(const scene::Node& node) {
 
 void dropTarget(TreeContext& tree, const NodePath& path, const scene::Node& node) {
     if (!ImGui::BeginDragDropTarget()) return;
-    if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kDragType)) {
-        auto* data = static_cast<const int*>(payload->Data);
-        NodePath from(data, data + payload->DataSize / static_cast<int>(sizeof(int)));
-        // where in the row the mouse is: top quarter before, bottom quarter after, else into
-        float top = ImGui::GetItemRectMin().y, height = ImGui::GetItemRectSize().y;
-        float t = (ImGui::GetMousePos().y - top) / height;
-        bool into = scene::kindSpec(node.kind).maxChildren != 0 && t > 0.25f && t < 0.75f;
-        if (into || path.empty()) {
-            tree.pending = [&tree, from, path] { reportProblems(tree.ui, tree.editor.move(from, path, -1)); };
+    // where in the row the mouse is: top quarter before, bottom quarter after, else into
+    ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    float t = (ImGui::GetMousePos().y - min.y) / (max.y - min.y);
+    bool into = path.empty() || (scene::kindSpec(node.kind).maxChildren != 0 && t > 0.25f && t < 0.75f);
+    bool after = t >= 0.5f;
+    const ImGuiDragDropFlags flags = ImGuiDragDropFlags_AcceptBeforeDelivery | ImGuiDragDropFlags_AcceptNoDrawDefaultRect;
+    if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kDragType, flags)) {
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        const ImU32 colour = ImGui::GetColorU32(ImGuiCol_DragDropTarget);
+        if (into) {
+            draw->AddRect(min, max, colour, 0.0f, 0, 2.0f);
         } else {
-            int index = path.back() + (t >= 0.5f ? 1 : 0);
-            NodePath parent = parentOf(path);
-            tree.pending = [&tree, from, parent, index] {
-                reportProblems(tree.ui, tree.editor.move(from, parent, index));
-            };
+            float y = after ? max.y : min.y;
+            draw->AddLine(ImVec2(min.x, y), ImVec2(max.x, y), colour, 3.0f);
+        }
+        if (payload->IsDelivery()) {
+            auto* data = static_cast<const int*>(payload->Data);
+            NodePath from(data, data + payload->DataSize / static_cast<int>(sizeof(int)));
+            if (into) {
+                tree.pending = [&tree, from, path] { reportProblems(tree.ui, tree.editor.move(from, path, -1)); };
+            } else {
+                int index = path.back() + (after ? 1 : 0);
+                NodePath parent = parentOf(path);
+                tree.pending = [&tree, from, parent, index] {
+                    reportProblems(tree.ui, tree.editor.move(from, parent, index));
+                };
+            }
         }
     }
     ImGui::EndDragDropTarget();
@@ -132,18 +144,18 @@ void drawSceneTree(Editor& editor, UiState& ui, const ThumbnailLookup& thumbnail
 }
 
 void drawAddMenuItems(Editor& editor, UiState& ui) {
-    const char* heading = nullptr;
-    for (const scene::KindSpec& spec : scene::allKinds()) {
-        if (spec.minChildren > 0) continue;  // unary operators are in the Wrap menu
-        const char* category = spec.category == scene::NodeCategory::Primitive ? "Primitives" : "Operations";
-        if (category != heading) {
-            if (heading) ImGui::Separator();
-            ImGui::TextDisabled("%s", category);
-            heading = category;
+    // primitives first, then the operations that take any number of children;
+    // unary operators are in the Wrap menu
+    for (bool primitives : {true, false}) {
+        ImGui::TextDisabled(primitives ? "Primitives" : "Operations");
+        for (const scene::KindSpec& spec : scene::allKinds()) {
+            bool isPrimitive = spec.category == scene::NodeCategory::Primitive;
+            if (isPrimitive != primitives || spec.minChildren > 0) continue;
+            if (ImGui::MenuItem(std::string(spec.name).c_str())) {
+                reportProblems(ui, editor.add(spec.kind, std::nullopt));
+            }
         }
-        if (ImGui::MenuItem(std::string(spec.name).c_str())) {
-            reportProblems(ui, editor.add(spec.kind, std::nullopt));
-        }
+        if (primitives) ImGui::Separator();
     }
 }
 

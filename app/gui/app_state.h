@@ -4,10 +4,12 @@
 // with the parts that own resources; the behaviour lives in functions per
 // concern (main_window.cpp, viewport_panel.cpp, file_actions.cpp, ...).
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/gui/glfw_context.h"
 #include "app/gui/snapshot_export.h"
@@ -48,6 +50,14 @@ struct ViewRequest {
     bool interacting = false;   // a camera drag or a slider drag is active
 };
 
+// A key press as GLFW reported it (GLFW_KEY_*, GLFW_MOD_* bits). Presses are
+// queued by the key callback rather than read from ImGui's key state, which in
+// 1.86 loses a press and release that arrive within one frame.
+struct KeyPress {
+    int key = 0;
+    int mods = 0;
+};
+
 struct AppState {
     GLFWwindow* window = nullptr;
     std::unique_ptr<GlfwContext> context;
@@ -58,6 +68,9 @@ struct AppState {
     SnapshotExport snapshot;
     FileState files;
     ViewRequest view;
+    std::vector<KeyPress> keyPresses;  // since the last frame
+    std::uint64_t lastRevision = 0;    // the editor's revision seen last frame
+    double lastChange = 0;             // glfwGetTime() when it last changed
     std::optional<ui::ScriptRunner> script;
     bool scripted = false;  // scripts and screenshot runs: no prompts, no autosave
     std::optional<std::filesystem::path> screenshot;  // to save at the end of this frame

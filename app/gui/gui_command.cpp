@@ -62,6 +62,13 @@ private:
 
 std::string glfwErrorText;
 
+// Installed before ImGui's backend, which then chains to it.
+void queueKeyPress(GLFWwindow* window, int key, int, int action, int mods) {
+    if (action == GLFW_RELEASE) return;
+    auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
+    if (app) app->keyPresses.push_back({key, mods});
+}
+
 void setUpStyle(float scale) {
     ImGui::StyleColorsDark();
     ImGuiStyle& style = ImGui::GetStyle();
@@ -107,7 +114,7 @@ void runFrame(AppState& app, Host& host) {
     handleShortcuts(app);
     drawMainWindow(app);
     app.viewport->update(app.editor.scene(), app.editor.revision(), app.ui, app.view.width, app.view.height,
-                         app.view.interacting, 0.012);
+                         app.view.interacting, app.view.interacting ? 0.020 : 0.012);
     app.thumbnails->update(app.view.interacting || app.ui.draggingNode);
     app.snapshot.poll();
     if (std::string outcome = app.snapshot.takeOutcome(); !outcome.empty()) {
@@ -189,11 +196,13 @@ int runGui(const GuiArguments& arguments) {
         float scaleX = 1, scaleY = 1;
         glfwGetWindowContentScale(window, &scaleX, &scaleY);
         setUpStyle(std::max(1.0f, scaleY));
+        glfwSetKeyCallback(window, queueKeyPress);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
         ImGui_ImplOpenGL3_Init("#version 330 core");
 
         AppState app;
         app.window = window;
+        glfwSetWindowUserPointer(window, &app);
         try {
             app.context = GlfwContext::forWindow(window);
             app.viewport = std::make_unique<Viewport>(*app.context);
@@ -209,6 +218,7 @@ int runGui(const GuiArguments& arguments) {
         app.files.offerRestore = !app.scripted && std::filesystem::exists(autosavePath());
         Host host(app);
         while (!app.quit) runFrame(app, host);
+        glfwSetWindowUserPointer(window, nullptr);
         if (!app.scripted) removeAutosave();
         exitCode = app.exitCode;
         app.viewport.reset();

@@ -1,6 +1,7 @@
 #include "app/gui/main_window.h"
 
 #include <cmath>
+#include <utility>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -49,6 +50,7 @@ void menuBar(AppState& app) {
         if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) openDialog(app, FileDialogState::Purpose::SaveAs);
         ImGui::Separator();
         if (ImGui::MenuItem("Export snapshot...", "Ctrl+E")) app.snapshot.dialogOpen = true;
+        if (ImGui::MenuItem("Save window as PNG", "F12")) saveWindowPicture(app);
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) request(app, {PendingAction::Kind::Quit, {}});
         ImGui::EndMenu();
@@ -230,32 +232,42 @@ void snapshotDialog(AppState& app) {
     ImGui::EndPopup();
 }
 
-// Pressed this frame. ImGui 1.86's GLFW backend indexes its key states by
-// GLFW key codes, so every letter is reachable this way.
-bool pressed(int key) {
-    static_assert(GLFW_KEY_LAST < 512);
-    return ImGui::IsKeyPressed(key, false);
-}
-
 }  // namespace
 
+void saveWindowPicture(AppState& app) {
+    // the next free name in the working directory, for bug reports and docs
+    for (int i = 1;; ++i) {
+        std::filesystem::path path = "sdf-workbench-window-" + std::to_string(i) + ".png";
+        if (!std::filesystem::exists(path)) {
+            app.screenshot = path;
+            return;
+        }
+    }
+}
+
 void handleShortcuts(AppState& app) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return;  // Ctrl+Z in a text field is the field's own undo
-    bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-    if (ctrl && pressed(GLFW_KEY_Z)) shift ? redo(app) : undo(app);
-    if (ctrl && pressed(GLFW_KEY_Y)) redo(app);
-    if (ctrl && pressed(GLFW_KEY_S)) shift ? openDialog(app, FileDialogState::Purpose::SaveAs) : saveOrAsk(app);
-    if (ctrl && pressed(GLFW_KEY_O)) openDialog(app, FileDialogState::Purpose::Open);
-    if (ctrl && pressed(GLFW_KEY_N)) request(app, {PendingAction::Kind::New, {}});
-    if (ctrl && pressed(GLFW_KEY_Q)) request(app, {PendingAction::Kind::Quit, {}});
-    if (ctrl && pressed(GLFW_KEY_E)) app.snapshot.dialogOpen = true;
-    if (ctrl && pressed(GLFW_KEY_D)) duplicateSelection(app);
-    if (ctrl && pressed(GLFW_KEY_1)) app.ui.backend = ui::ViewBackend::Gl;
-    if (ctrl && pressed(GLFW_KEY_2)) app.ui.backend = ui::ViewBackend::Cpu;
-    if (!ctrl && pressed(GLFW_KEY_DELETE)) deleteSelection(app);
-    if (!ctrl && pressed(GLFW_KEY_F)) frameAll(app);
-    if (!ctrl && pressed(GLFW_KEY_H)) app.ui.stepHeat = !app.ui.stepHeat;
+    std::vector<KeyPress> presses = std::exchange(app.keyPresses, {});
+    if (ImGui::GetIO().WantTextInput) return;  // Ctrl+Z in a text field is the field's own undo
+    for (const KeyPress& press : presses) {
+        bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
+        switch (ctrl ? press.key : -press.key) {  // negative: the key without Ctrl
+        case GLFW_KEY_Z: shift ? redo(app) : undo(app); break;
+        case GLFW_KEY_Y: redo(app); break;
+        case GLFW_KEY_S: shift ? openDialog(app, FileDialogState::Purpose::SaveAs) : saveOrAsk(app); break;
+        case GLFW_KEY_O: openDialog(app, FileDialogState::Purpose::Open); break;
+        case GLFW_KEY_N: request(app, {PendingAction::Kind::New, {}}); break;
+        case GLFW_KEY_Q: request(app, {PendingAction::Kind::Quit, {}}); break;
+        case GLFW_KEY_E: app.snapshot.dialogOpen = true; break;
+        case GLFW_KEY_D: duplicateSelection(app); break;
+        case GLFW_KEY_1: app.ui.backend = ui::ViewBackend::Gl; break;
+        case GLFW_KEY_2: app.ui.backend = ui::ViewBackend::Cpu; break;
+        case -GLFW_KEY_DELETE: deleteSelection(app); break;
+        case -GLFW_KEY_F: frameAll(app); break;
+        case -GLFW_KEY_H: app.ui.stepHeat = !app.ui.stepHeat; break;
+        case -GLFW_KEY_F12: saveWindowPicture(app); break;
+        default: break;
+        }
+    }
 }
 
 void drawMainWindow(AppState& app) {

@@ -9,8 +9,13 @@ namespace sdfwb::app::gui {
 
 void drawMainWindow(AppState& app);
 
-// Keyboard shortcuts (read through GLFW key codes, since ImGui 1.86 names
-// only a few letters); ignored while a text field has focus.
+// Keyboard shortcuts from the GLFW key presses queued in app.keyPresses
+// (GLFW key codes: ImGui 1.86 names only a few letters); ignored while a
+// text field has focus.
 void handleShortcuts(AppState& app);
+
+// Saves the window as drawn at the end of this frame to the next free
+// sdf-workbench-window-N.png in the working directory.
+void saveWindowPicture(AppState& app);
 
 }  // namespace sdfwb::app::gui

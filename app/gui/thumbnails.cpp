@@ -29,7 +29,10 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
     std::uint64_t key = known != keys_.end()
                             ? known->second
                             : (keys_[path] = std::hash<std::string>{}(scene::nodeToJson(node).dump()) ^ (lookHash_ * 31));
-    if (auto texture = textures_.find(key); texture != textures_.end()) return texture->second->id();
+    if (auto texture = textures_.find(key); texture != textures_.end()) {
+        shown_[path] = key;
+        return texture->second->id();
+    }
     if (requested_.insert(key).second) {
         scene::Scene alone = scene;
         alone.root = node;
@@ -39,7 +42,8 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         program::CompileOptions options{kSize, kSize, 1};
         jobs_.submit({key, program::compileScene(alone, options)}, false);
     }
-    return nullptr;
+    auto previous = shown_.find(path);
+    return previous == shown_.end() ? nullptr : textures_.at(previous->second)->id();
 }
 
 void Thumbnails::update(bool paused) {

@@ -39,6 +39,8 @@ private:
     std::uint64_t revision_ = 0;
     std::uint64_t lookHash_ = 0;  // materials, lights, environment
     std::map<ui::NodePath, std::uint64_t> keys_;
+    // The texture last shown at each path: shown until the new one is ready.
+    std::map<ui::NodePath, std::uint64_t> shown_;
 };
 
 }  // namespace sdfwb::app::gui

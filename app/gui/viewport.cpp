@@ -11,6 +11,7 @@ namespace sdfwb::app::gui {
 namespace {
 constexpr int kDefaultTileSize = 64;   // pixels per side of one GL draw, before any measurement
 constexpr double kDrawBudget = 0.006;  // seconds one GL draw should take at most
+constexpr double kPreviewCost = 0.05;  // GPU seconds a preview image should take while interacting
 constexpr std::uint64_t kStageTags = 16;  // CPU job tags: plan * 16 + stage
 
 std::uint64_t mix(std::uint64_t seed, std::uint64_t value) {
@@ -41,7 +42,7 @@ void Viewport::plan(const scene::Scene& scene, const ui::UiState& ui, int width,
     height_ = std::max(1, height);
     stages_.clear();
     if (interacting) {
-        stages_.push_back({2, 1});
+        stages_.push_back({previewScale(), 1});
     } else {
         stages_.push_back({1, 1});
         if (scene.render.aa > 1) stages_.push_back({1, scene.render.aa});
@@ -132,6 +133,15 @@ void Viewport::updateGl(double budgetSeconds) {
         glJob_.reset();
         glStage_ = stages_.size();
     }
+}
+
+int Viewport::previewScale() const {
+    // the largest preview whose cost, as measured on the last GL stage, is
+    // about kPreviewCost; at least half resolution
+    double pixels = static_cast<double>(width_) * height_;
+    if (secondsPerSample_ <= 0 || pixels <= 0) return 4;
+    double scale = std::ceil(std::sqrt(pixels * secondsPerSample_ / kPreviewCost));
+    return std::clamp(static_cast<int>(scale), 2, 16);
 }
 
 int Viewport::tileSize() const {

@@ -98,6 +98,8 @@ private:
     // the next job's tiles so that one draw stays well inside the budget.
     double secondsPerSample_ = 0;
     int tileSize() const;
+    // The preview's reduction factor while the user interacts.
+    int previewScale() const;
 
     ViewportStats stats_;
     std::string error_;

@@ -63,28 +63,28 @@ void toolbar(AppState& app) {
     if (ImGui::Button("Snapshot...")) app.snapshot.dialogOpen = true;
 }
 
+// A child of the viewport window, so it stays above the image however focus moves.
 void statsOverlay(AppState& app, ImVec2 corner) {
     const Viewport& viewport = *app.viewport;
     const ViewportStats& s = viewport.stats();
-    ImGui::SetNextWindowPos(ImVec2(corner.x + 8, corner.y + 8));
-    // a fixed width: auto-resizing would lag a frame behind changing text
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 24, 0));
-    ImGui::SetNextWindowBgAlpha(0.6f);
-    ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
-                             ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing |
-                             ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoSavedSettings;
-    if (ImGui::Begin("##stats", nullptr, flags)) {
-        bool gl = app.ui.backend == ui::ViewBackend::Gl || app.ui.compare != ui::CompareMode::Off;
-        ImGui::Text("frame %.1f ms   backend %s", app.frameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
-        ImGui::Text("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa,
-                    s.renderSeconds * 1000.0, s.gpuSeconds * 1000.0);
-        ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
-                    s.frame.hitRatio * 100.0);
-        ImGui::Text("GL %s", viewport.glInfo().renderer.c_str());
-        ImGui::Text("shaders built %d, last %.2f s", s.compiles, s.compileSeconds);
-        ImGui::Text("%s", s.status.c_str());
-    }
-    ImGui::End();
+    constexpr int kLines = 6;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImVec2 size(ImGui::GetFontSize() * 24,
+                kLines * ImGui::GetTextLineHeightWithSpacing() + 2 * style.WindowPadding.y - style.ItemSpacing.y);
+    ImGui::SetCursorScreenPos(ImVec2(corner.x + 8, corner.y + 8));
+    ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(20, 22, 26, 160));
+    ImGui::BeginChild("stats", size, false, ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
+    bool gl = app.ui.backend == ui::ViewBackend::Gl || app.ui.compare != ui::CompareMode::Off;
+    ImGui::Text("frame %.1f ms   backend %s", app.frameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
+    ImGui::Text("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa, s.renderSeconds * 1000.0,
+                s.gpuSeconds * 1000.0);
+    ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
+                s.frame.hitRatio * 100.0);
+    ImGui::Text("GL %s", viewport.glInfo().renderer.c_str());
+    ImGui::Text("shaders built %d, last %.2f s", s.compiles, s.compileSeconds);
+    ImGui::Text("%s", s.status.c_str());
+    ImGui::EndChild();
+    ImGui::PopStyleColor();
 }
 
 void comparisonLine(const AppState& app) {
@@ -145,7 +145,15 @@ void drawViewportPanel(AppState& app) {
     }
     ImGui::SetCursorScreenPos(corner);
     bool dragging = cameraControls(app, size);
-    app.view.interacting = dragging || (ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    // A slider drag counts as interaction while it keeps changing the scene
+    // (not, say, while a tree row is dragged): render the quick preview then.
+    double now = ImGui::GetTime();
+    if (app.editor.revision() != app.lastRevision) {
+        app.lastRevision = app.editor.revision();
+        app.lastChange = now;
+    }
+    bool editing = ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left) && now - app.lastChange < 0.5;
+    app.view.interacting = dragging || editing;
     if (app.ui.showStats) statsOverlay(app, corner);
 }
 
