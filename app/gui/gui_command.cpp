@@ -114,7 +114,7 @@ void runFrame(AppState& app, Host& host) {
     handleShortcuts(app);
     drawMainWindow(app);
     app.viewport->update(app.editor.scene(), app.editor.revision(), app.ui, app.view.width, app.view.height,
-                         app.view.interacting, app.view.interacting ? 0.020 : 0.012);
+                         app.view.interacting, app.view.interacting ? 0.020 : 0.025);
     app.thumbnails->update(app.view.interacting || app.ui.draggingNode);
     app.snapshot.poll();
     if (std::string outcome = app.snapshot.takeOutcome(); !outcome.empty()) {

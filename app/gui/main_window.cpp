@@ -208,9 +208,11 @@ void snapshotDialog(AppState& app) {
     ImGui::InputInt2("size", &s.width);
     ImGui::SetNextItemWidth(200);
     ImGui::SliderInt("AA", &s.aa, 1, 8);
-    ImGui::RadioButton("CPU", reinterpret_cast<int*>(&s.gl), 0);
+    int backend = s.gl ? 1 : 0;
+    ImGui::RadioButton("CPU", &backend, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("GLSL", reinterpret_cast<int*>(&s.gl), 1);
+    ImGui::RadioButton("GLSL", &backend, 1);
+    s.gl = backend == 1;
     ImGui::EndDisabled();
     s.width = std::clamp(s.width, 1, 16384);
     s.height = std::clamp(s.height, 1, 16384);
