@@ -11,12 +11,13 @@
 
 namespace sdfwb::ui {
 
-// Edits `value` in place with a drag widget; returns true when the value
-// changed this frame. `endMerge` is set when the drag (or typed edit) ended.
+// What a widget did this frame: changed its value, and/or finished the
+// interaction (drag released, typed value entered), which ends the undo merge.
 struct WidgetEdit {
     bool changed = false;
     bool finished = false;
 };
+// Drag widgets that edit `value` in place.
 WidgetEdit dragReal(const char* label, double& value, double speed, double minimum, double maximum,
                     const char* format = "%.3f");
 WidgetEdit dragVec3(const char* label, glm::dvec3& value, double speed, double minimum, double maximum,

@@ -305,7 +305,8 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         host.quit();
         return done();
     }
-    return fail(c, "not implemented");  // parseScript admits only the commands above
+    // parseScript admits only the commands handled above
+    return fail(c, "no handler for this command (a bug: please report it)");
 }
 
 std::string screenshotScript(const std::string& output, int frames) {
