@@ -56,7 +56,7 @@ typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* sc
     domain_.negate(multiplier);
     layout_.divide(shift.data(), mon.data(), g.mons.data());
     if (g.size() > 1) bucket_.add_multiple(g, 1, multiplier, shift.data());
-    sugar = std::max(sugar, layout_.degree(shift.data()) + g.sugar);
+    sugar = std::max(sugar, layout_.sugar_degree(shift.data()) + g.sugar);
     if constexpr (D::has_content) {
       if (scaled_bits > kContentBits && !scale_product) {
         remove_content(result);
@@ -126,7 +126,7 @@ void Engine<D>::insert(P h) {
   basis_.push_back(std::move(element));
   const Word* lead_k = lead(k);
   const std::uint32_t sugar_k = basis_[k].poly.sugar;
-  const std::uint32_t degree_k = layout_.degree(lead_k);
+  const std::uint32_t degree_k = layout_.sugar_degree(lead_k);
 
   // New pairs (i, k) with the current non-redundant elements, filtered by
   // Gebauer-Moeller's criteria M, F and the product criterion B_k.
@@ -185,8 +185,8 @@ void Engine<D>::insert(P h) {
     if (!keep[a]) continue;
     const std::uint32_t i = reducers_[a];
     const std::uint32_t sugar_i = basis_[i].poly.sugar;
-    const std::uint32_t degree_i = layout_.degree(lead(i));
-    const std::uint32_t degree_l = layout_.degree(&lcms[a * stride]);
+    const std::uint32_t degree_i = layout_.sugar_degree(lead(i));
+    const std::uint32_t degree_l = layout_.sugar_degree(&lcms[a * stride]);
     // Sugar bounds the degree, so sugar >= degree of the leading monomial;
     // signed arithmetic keeps a violation from wrapping around.
     const std::int64_t ecart = std::max<std::int64_t>(std::int64_t{sugar_i} - degree_i, std::int64_t{sugar_k} - degree_k);
@@ -255,7 +255,7 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
     if (f.empty()) continue;
     domain_.normalize(f.coeffs);
     std::uint32_t degree = 0;
-    for (std::size_t t = 0; t < f.size(); ++t) degree = std::max(degree, layout_.degree(f.mon(t, stride)));
+    for (std::size_t t = 0; t < f.size(); ++t) degree = std::max(degree, layout_.sugar_degree(f.mon(t, stride)));
     f.sugar = degree;
     generators_.push_back(std::move(f));
     const P& g = generators_.back();
@@ -308,7 +308,7 @@ bool Engine<D>::is_groebner(std::vector<P> basis) {
   for (P& g : basis) {
     if (g.empty()) continue;
     std::uint32_t degree = 0;
-    for (std::size_t t = 0; t < g.size(); ++t) degree = std::max(degree, layout_.degree(g.mon(t, stride)));
+    for (std::size_t t = 0; t < g.size(); ++t) degree = std::max(degree, layout_.sugar_degree(g.mon(t, stride)));
     g.sugar = degree;
     insert(std::move(g));
   }
@@ -326,6 +326,29 @@ bool Engine<D>::is_groebner(std::vector<P> basis) {
     ++stats_.zero_reductions;
   }
   return true;
+}
+
+template <class D>
+std::vector<typename Engine<D>::P> Engine<D>::reduce_basis(std::vector<P> basis) {
+  set_basis(std::move(basis));
+  std::vector<std::uint32_t> minimal;
+  for (std::uint32_t i : reducers_) {
+    bool redundant = false;
+    for (std::uint32_t j : reducers_) {
+      if (j == i || !layout_.divides(lead(j), lead(i))) continue;
+      // Of equal leading monomials keep the first.
+      if (!layout_.equal(lead(j), lead(i)) || j < i) redundant = true;
+    }
+    if (!redundant) minimal.push_back(i);
+  }
+  reducers_ = std::move(minimal);
+  interreduce();
+  std::vector<P> result;
+  for (std::uint32_t r : reducers_) result.push_back(std::move(basis_[r].poly));
+  std::sort(result.begin(), result.end(), [&](const P& a, const P& b) {
+    return layout_.compare(a.mons.data(), b.mons.data()) < 0;
+  });
+  return result;
 }
 
 template <class D>

@@ -39,6 +39,11 @@ class Engine {
   /// engine.
   bool is_groebner(std::vector<P> basis);
 
+  /// The reduced Groebner basis from a Groebner basis (not necessarily
+  /// minimal or reduced): drops elements with a divisible leading monomial
+  /// and reduces the tails.
+  std::vector<P> reduce_basis(std::vector<P> basis);
+
   /// Installs a basis that is already a (reduced or not) Groebner basis, for
   /// normal_form.
   void set_basis(std::vector<P> basis);

@@ -16,6 +16,9 @@ Layout::Layout(const Ring& ring) : vars_(ring.size()) {
     if (std::any_of(words.begin(), words.end(), [](Word w) { return w != 0; })) matrix_.push_back(std::move(words));
   }
   keys_ = matrix_.size();
+  first_row_is_degree_ =
+      keys_ > 0 && std::all_of(matrix_[0].begin(), matrix_[0].end(), [](Word w) { return w >= 0; }) &&
+      std::any_of(matrix_[0].begin(), matrix_[0].end(), [](Word w) { return w > 0; });
   stride_ = keys_ + vars_;
   // Spread 64 mask bits over the variables: with b bits per variable, bit k
   // says "exponent > k" for k < b, so small exponents are told apart.

@@ -65,12 +65,23 @@ class Layout {
     for (std::size_t i = keys_; i < stride_; ++i) d += static_cast<std::uint32_t>(m[i]);
     return d;
   }
+  /// The degree the sugar strategy works with: the first row of the order
+  /// matrix when it has no negative entry (total degree for degrevlex and
+  /// deglex, the weighted degree for weighted orders, the degree in the first
+  /// block for block orders), else the total degree. Selecting pairs by a
+  /// degree that agrees with the order's first criterion keeps elimination
+  /// orders from wandering through high total degrees (Singular's pFDeg does
+  /// the same).
+  std::uint32_t sugar_degree(const Word* m) const {
+    return first_row_is_degree_ ? static_cast<std::uint32_t>(m[0]) : degree(m);
+  }
   /// Mask with a bit set for each (variable, threshold) the exponent reaches:
   /// divides(a, b) implies (mask(a) & ~mask(b)) == 0.
   std::uint64_t divmask(const Word* m) const;
 
  private:
   std::size_t vars_, keys_, stride_;
+  bool first_row_is_degree_ = false;
   std::vector<std::vector<Word>> matrix_;
   std::vector<std::vector<std::int32_t>> mask_bits_;  // per variable: thresholds
 };

@@ -4,6 +4,7 @@
 #include "algebra/gb_engine.h"
 #include "algebra/gb_modular.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sdfwb::algebra {
@@ -16,6 +17,71 @@ void check_ring(const std::vector<Polynomial>& polys, const RingPtr& ring, const
   for (const Polynomial& p : polys) {
     if (!(*p.ring() == *ring)) throw std::invalid_argument(std::string(what) + ": polynomials from different rings");
   }
+}
+
+// Orders whose first criterion is a positive degree (deglex, degrevlex,
+// weighted with positive weights): the sugar strategy handles them well.
+bool is_degree_order(const Ring& ring) {
+  std::vector<std::vector<std::int64_t>> matrix = ring.order().matrix(ring.size());
+  return !matrix.empty() &&
+         std::all_of(matrix.front().begin(), matrix.front().end(), [](std::int64_t w) { return w > 0; });
+}
+
+// Reduced Groebner basis (monic, sorted) from a Groebner basis over Q.
+std::vector<Polynomial> reduce_basis(const std::vector<Polynomial>& basis, const RingPtr& ring,
+                                     BudgetMonitor& monitor) {
+  const gb::Layout layout(*ring);
+  const gb::IntegerDomain domain;
+  IntegerEngine engine(layout, domain, monitor);
+  std::vector<gb::IntPoly> packed;
+  for (const Polynomial& g : basis) {
+    if (!g.is_zero()) packed.push_back(gb::to_integer_poly(g, layout));
+  }
+  std::vector<Polynomial> out;
+  for (const gb::IntPoly& g : engine.reduce_basis(std::move(packed))) {
+    out.push_back(gb::to_polynomial(g, layout, ring, true));
+  }
+  return out;
+}
+
+// For orders that are not degree orders (lex, block and elimination orders),
+// Buchberger on inhomogeneous input wanders through high degrees. Instead:
+// homogenize with a new smallest variable h, compute a basis of the
+// homogeneous ideal with the order "total degree, then the given order on
+// the old variables, then h" (all homogeneous computations are graded), and
+// set h = 1: the result is a Groebner basis of the ideal in the given order
+// (Kreuzer-Robbiano, Computational Commutative Algebra 2, Prop. 4.3.18).
+std::vector<Polynomial> homogenized_groebner(const Ideal& ideal, BudgetMonitor& monitor, GroebnerStats& stats) {
+  const Ring& ring = *ideal.ring();
+  const std::size_t n = ring.size();
+  std::vector<std::string> names = ring.variables();
+  names.push_back(internal_variable_name("h", names));
+  RingPtr homogeneous = Ring::make(
+      names, MonomialOrder::weighted(std::vector<std::int64_t>(n + 1, 1),
+                                     MonomialOrder::block({{n, ring.order()}, {1, MonomialOrder::lex()}})));
+  std::vector<Polynomial> generators;
+  for (const Polynomial& f : ideal.generators()) {
+    const std::uint64_t degree = f.total_degree();
+    std::vector<Term> terms;
+    for (const Term& t : f.terms()) {
+      std::vector<Exponent> e = t.monomial.exponents();
+      e.push_back(static_cast<Exponent>(degree - t.monomial.degree()));
+      terms.push_back(Term{Monomial(std::move(e)), t.coefficient});
+    }
+    generators.emplace_back(homogeneous, std::move(terms));
+  }
+  std::vector<Polynomial> basis = gb::modular_groebner(generators, homogeneous, monitor, stats);
+  std::vector<Polynomial> dehomogenized;
+  for (const Polynomial& g : basis) {
+    std::vector<Term> terms;
+    for (const Term& t : g.terms()) {
+      std::vector<Exponent> e = t.monomial.exponents();
+      e.pop_back();
+      terms.push_back(Term{Monomial(std::move(e)), t.coefficient});
+    }
+    dehomogenized.emplace_back(ideal.ring(), std::move(terms));
+  }
+  return reduce_basis(dehomogenized, ideal.ring(), monitor);
 }
 
 }  // namespace
@@ -39,7 +105,10 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
           result.method = "modular+fglm";
         }
       }
-      if (result.method == "modular") {
+      if (result.method == "modular" && options.method == GroebnerMethod::automatic && !is_degree_order(*ring)) {
+        result.basis = homogenized_groebner(ideal, monitor, result.stats);
+        result.method = "modular+homogenized";
+      } else if (result.method == "modular") {
         result.basis = gb::modular_groebner(ideal.generators(), ring, monitor, result.stats);
       }
     } catch (const BudgetExceeded& e) {

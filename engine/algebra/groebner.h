@@ -22,7 +22,8 @@ namespace sdfwb::algebra {
 
 enum class GroebnerMethod {
   /// The fastest exact method we have: modular; for lex, first degrevlex and,
-  /// if the ideal is zero-dimensional, FGLM to lex.
+  /// if the ideal is zero-dimensional, FGLM to lex; for other orders that
+  /// are not degree orders (block, elimination), via homogenization.
   automatic,
   /// Bases modulo several primes, lifted to Q and verified over Q
   /// (see gb_modular.h for what the verification proves).
@@ -43,7 +44,7 @@ struct GroebnerResult {
   std::vector<Polynomial> basis;   // empty unless completed
   GroebnerStats stats;
   double seconds = 0;              // the computation's own wall-clock time
-  std::string method;              // what ran: "modular", "modular+fglm", "rational"
+  std::string method;              // what ran: "modular", "modular+fglm", "modular+homogenized", "rational"
 
   bool ok() const { return status == Status::completed; }
 };

@@ -93,8 +93,15 @@ GroebnerResult eliminate(const Ideal& ideal, const std::vector<std::string>& var
   RingPtr remaining_ring = Ring::make(remaining, remaining_order);
   std::vector<std::string> names = eliminated;
   names.insert(names.end(), remaining.begin(), remaining.end());
-  RingPtr block = Ring::make(names, MonomialOrder::elimination(eliminated.size(), MonomialOrder::degrevlex(),
-                                                                remaining_order));
+  // Elimination order: the degree in the eliminated variables first, then
+  // degrevlex on them and remaining_order on the rest. (A weight vector is
+  // far cheaper than the block order (degrevlex, remaining_order) here: the
+  // trigonometric cross-cap takes 0.1 s instead of over a minute.)
+  std::vector<std::int64_t> weights(names.size(), 0);
+  std::fill(weights.begin(), weights.begin() + static_cast<std::ptrdiff_t>(eliminated.size()), 1);
+  RingPtr block = Ring::make(
+      names, MonomialOrder::weighted(weights, MonomialOrder::elimination(eliminated.size(), MonomialOrder::degrevlex(),
+                                                                         remaining_order)));
   GroebnerResult result = groebner_basis(Ideal(block, ideal.generators()), options);
   std::vector<Polynomial> kept;
   for (const Polynomial& g : result.basis) {

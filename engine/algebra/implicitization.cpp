@@ -85,15 +85,15 @@ void reduce_fractions(Fractions& f) {
 
 }  // namespace
 
-ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
+EliminationProblem implicitization_ideal(const RationalParametrization& p, DenominatorStrategy denominator) {
   Fractions f = prepare(p);
-  if (options.denominator == DenominatorStrategy::lcm) reduce_fractions(f);
+  if (denominator == DenominatorStrategy::lcm) reduce_fractions(f);
 
   // q: lcm of the reduced denominators (or their product).
   Polynomial q = f.ring->one();
   for (const Polynomial& den : f.denominators) {
     if (den.is_constant()) continue;
-    q = options.denominator == DenominatorStrategy::lcm ? lcm(q, den) : q * den;
+    q = denominator == DenominatorStrategy::lcm ? lcm(q, den) : q * den;
   }
 
   std::vector<std::string> taken = p.parameters;
@@ -111,8 +111,12 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   }
   if (!q.is_constant()) generators.push_back(1 - q.in_ring(ring) * ring->var(eliminated.front()));
   for (const Polynomial& r : f.relations) generators.push_back(r.in_ring(ring));
+  return EliminationProblem{Ideal(ring, generators), eliminated};
+}
 
-  GroebnerResult basis = eliminate(Ideal(ring, generators), eliminated, options.groebner);
+ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
+  EliminationProblem problem = implicitization_ideal(p, options.denominator);
+  GroebnerResult basis = eliminate(problem.ideal, problem.eliminated, options.groebner);
   ImplicitizationResult result;
   result.status = basis.status;
   result.message = basis.message;

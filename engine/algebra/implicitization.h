@@ -61,6 +61,18 @@ struct ImplicitizationResult {
   bool ok() const { return status == Status::completed; }
 };
 
+/// The ideal whose elimination gives the implicit equations, and the
+/// variables to eliminate (the auxiliary y of Theorem 1.8 first, if any, then
+/// the parameters); its ring lists those variables first, then the
+/// coordinates, with the elimination order. Exposed so the ideal can be shown
+/// or handed to another system.
+struct EliminationProblem {
+  Ideal ideal;
+  std::vector<std::string> eliminated;
+};
+EliminationProblem implicitization_ideal(const RationalParametrization& parametrization,
+                                         DenominatorStrategy denominator = DenominatorStrategy::lcm);
+
 /// Throws std::invalid_argument with one clear line for malformed input
 /// (counts differ, a zero denominator, a coordinate named like a parameter,
 /// a variable that is not a parameter).

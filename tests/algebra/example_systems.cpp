@@ -71,4 +71,131 @@ std::vector<NamedSystem> small_systems() {
   return out;
 }
 
+namespace {
+
+// cos and sin of one angle, either as variables c, s with c^2 + s^2 = 1 or
+// by the half-angle substitution in t: ((1 - t^2) / (1 + t^2), 2t / (1 + t^2)).
+struct Angle {
+  Polynomial cos_num, sin_num, den;
+};
+
+struct TrigBuilder {
+  bool half_angle;
+  std::vector<std::string> names;  // per angle: {"c", "s"} or {"t"}
+  RingPtr ring;
+  std::vector<Polynomial> relations;
+
+  TrigBuilder(bool half, const std::vector<std::string>& angles) : half_angle(half) {
+    for (const std::string& a : angles) {
+      if (half) {
+        names.push_back("t" + a);
+      } else {
+        names.push_back("c" + a);
+        names.push_back("s" + a);
+      }
+    }
+  }
+  void add_parameter(const std::string& name) { names.push_back(name); }
+  void finish() {
+    ring = Ring::make(names);
+    if (!half_angle) {
+      for (std::size_t i = 0; i + 1 < names.size(); i += 2) {
+        if (names[i][0] != 'c') break;
+        relations.push_back(pow(ring->var(names[i]), 2) + pow(ring->var(names[i + 1]), 2) - 1);
+      }
+    }
+  }
+  Angle angle(const std::string& a) const {
+    if (half_angle) {
+      Polynomial t = ring->var("t" + a);
+      return {1 - pow(t, 2), 2 * t, 1 + pow(t, 2)};
+    }
+    return {ring->var("c" + a), ring->var("s" + a), ring->one()};
+  }
+};
+
+NamedParametrization torus(bool half) {
+  // x = (2 + cos v) cos u, y = (2 + cos v) sin u, z = sin v.
+  TrigBuilder b(half, {"u", "v"});
+  b.finish();
+  Angle u = b.angle("u"), v = b.angle("v");
+  Polynomial ring_radius = 2 * v.den + v.cos_num;  // (2 + cos v) * den_v
+  RationalParametrization p{b.names, {"x", "y", "z"},
+                            {ring_radius * u.cos_num, ring_radius * u.sin_num, v.sin_num},
+                            {v.den * u.den, v.den * u.den, v.den}, b.relations};
+  return {std::string("torus/") + (half ? "half-angle" : "cs"), p};
+}
+
+NamedParametrization cross_cap(bool half) {
+  // x = cos u sin 2v, y = sin u sin 2v, z = cos^2 v - cos^2 u sin^2 v.
+  TrigBuilder b(half, {"u", "v"});
+  b.finish();
+  Angle u = b.angle("u"), v = b.angle("v");
+  Polynomial sin2v = 2 * v.sin_num * v.cos_num;  // / den_v^2
+  Polynomial z_num = pow(v.cos_num, 2) * pow(u.den, 2) - pow(u.cos_num, 2) * pow(v.sin_num, 2);
+  RationalParametrization p{b.names, {"x", "y", "z"},
+                            {u.cos_num * sin2v, u.sin_num * sin2v, z_num},
+                            {u.den * pow(v.den, 2), u.den * pow(v.den, 2), pow(u.den, 2) * pow(v.den, 2)},
+                            b.relations};
+  return {std::string("cross-cap/") + (half ? "half-angle" : "cs"), p};
+}
+
+NamedParametrization moebius(bool half) {
+  // x = (1 + v/2 cos(u/2)) cos u, y = (1 + v/2 cos(u/2)) sin u, z = v/2 sin(u/2),
+  // with w = u/2: cos u = cos^2 w - sin^2 w, sin u = 2 sin w cos w.
+  TrigBuilder b(half, {"w"});
+  b.add_parameter("v");
+  b.finish();
+  Angle w = b.angle("w");
+  Polynomial v = b.ring->var("v");
+  Polynomial radius = 2 * w.den + v * w.cos_num;  // 2 * den_w * (1 + v/2 cos w)
+  Polynomial cos_u = pow(w.cos_num, 2) - pow(w.sin_num, 2), sin_u = 2 * w.sin_num * w.cos_num;
+  RationalParametrization p{b.names, {"x", "y", "z"},
+                            {radius * cos_u, radius * sin_u, v * w.sin_num},
+                            {2 * pow(w.den, 3), 2 * pow(w.den, 3), 2 * w.den}, b.relations};
+  return {std::string("moebius/") + (half ? "half-angle" : "cs"), p};
+}
+
+NamedParametrization dupin_cyclide(bool half) {
+  // a = 5, c = 3, b = 4, d = 2:
+  // x = (d (c - a cos u cos v) + b^2 cos u) / (a - c cos u cos v)
+  // y = b sin u (a - d cos v) / (a - c cos u cos v)
+  // z = b sin v (c cos u - d) / (a - c cos u cos v)
+  TrigBuilder b(half, {"u", "v"});
+  b.finish();
+  Angle u = b.angle("u"), v = b.angle("v");
+  Polynomial duv = u.den * v.den;
+  Polynomial denominator = 5 * duv - 3 * u.cos_num * v.cos_num;  // (a - c cu cv) * du dv
+  Polynomial x = 2 * (3 * duv - 5 * u.cos_num * v.cos_num) + 16 * u.cos_num * v.den;
+  Polynomial y = 4 * u.sin_num * (5 * v.den - 2 * v.cos_num);
+  Polynomial z = 4 * v.sin_num * (3 * u.cos_num - 2 * u.den);
+  RationalParametrization p{b.names, {"x", "y", "z"}, {x, y, z}, {denominator, denominator, denominator},
+                            b.relations};
+  return {std::string("dupin-cyclide/") + (half ? "half-angle" : "cs"), p};
+}
+
+}  // namespace
+
+std::vector<NamedParametrization> classic_parametrizations() {
+  std::vector<NamedParametrization> out;
+  auto uv = Ring::make({"u", "v"});
+  Polynomial u = uv->var("u"), v = uv->var("v");
+  out.push_back({"tangent-surface", {{"u", "v"}, {"x", "y", "z"},
+                                     {u + v, pow(u, 2) + 2 * u * v, pow(u, 3) + 3 * pow(u, 2) * v}, {}, {}}});
+  out.push_back({"whitney-umbrella", {{"u", "v"}, {"x", "y", "z"}, {u * v, v, pow(u, 2)}, {}, {}}});
+  Polynomial d = pow(u, 2) + pow(v, 2) + 1;
+  out.push_back({"sphere-stereographic",
+                 {{"u", "v"}, {"x", "y", "z"}, {2 * u, 2 * v, pow(u, 2) + pow(v, 2) - 1}, {d, d, d}, {}}});
+  out.push_back({"enneper", {{"u", "v"}, {"x", "y", "z"},
+                             {3 * u + 3 * u * pow(v, 2) - pow(u, 3), 3 * v + 3 * pow(u, 2) * v - pow(v, 3),
+                              3 * pow(u, 2) - 3 * pow(v, 2)}, {}, {}}});
+  for (bool half : {false, true}) {
+    out.push_back(torus(half));
+    out.push_back(cross_cap(half));
+    out.push_back(moebius(half));
+    out.push_back(dupin_cyclide(half));
+  }
+  return out;
+}
+
 }  // namespace sdfwb::algebra::testing

@@ -3,6 +3,7 @@
 // benchmark families (Katsura, cyclic) and small textbook systems.
 
 #include "algebra/ideal.h"
+#include "algebra/implicitization.h"
 
 #include <string>
 #include <vector>
@@ -21,5 +22,16 @@ Ideal cyclic(int n, const MonomialOrder& order = MonomialOrder::degrevlex());
 
 /// Small systems with several orders, fast enough for unit tests.
 std::vector<NamedSystem> small_systems();
+
+struct NamedParametrization {
+  std::string name;
+  RationalParametrization parametrization;
+};
+
+/// Classic surfaces: Cox-Little-O'Shea examples and trigonometric surfaces
+/// (torus, cross-cap, Moebius strip, Dupin cyclide), the trigonometric ones
+/// both with c = cos, s = sin and c^2 + s^2 = 1 ("/cs") and with the
+/// half-angle substitution ("/half-angle").
+std::vector<NamedParametrization> classic_parametrizations();
 
 }  // namespace sdfwb::algebra::testing
