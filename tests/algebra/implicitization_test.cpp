@@ -120,3 +120,31 @@ TEST(Implicitization, RejectsMalformedInput) {
 
 }  // namespace
 }  // namespace sdfwb::algebra
+
+#include "example_systems.h"
+
+#include <map>
+
+namespace sdfwb::algebra {
+namespace {
+
+TEST(Implicitization, ClassicSurfacesVanishOnTheirParametrizations) {
+  // Every classic surface gives one equation that vanishes exactly on the
+  // parametrization, and the c/s-with-relation and half-angle forms of each
+  // trigonometric surface give the same equation.
+  std::map<std::string, Polynomial> by_surface;
+  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+    SCOPED_TRACE(example.name);
+    ImplicitizationResult r = implicitize(example.parametrization);
+    ASSERT_TRUE(r.ok()) << r.message;
+    ASSERT_EQ(r.generators.size(), 1u);
+    const Polynomial& f = r.generators.front();
+    EXPECT_TRUE(substitute_parametrization(f, example.parametrization).is_zero()) << f;
+    const std::string surface = example.name.substr(0, example.name.find('/'));
+    auto [it, inserted] = by_surface.emplace(surface, f);
+    if (!inserted) EXPECT_EQ(it->second, f);
+  }
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra

@@ -2,6 +2,7 @@
 // Singular is missing, unless SDFWB_REQUIRE_SINGULAR=1 (set in CI).
 
 #include "algebra/groebner.h"
+#include "algebra/implicitization.h"
 #include "example_systems.h"
 #include "singular_runner.h"
 
@@ -18,11 +19,16 @@ bool singular_required() {
   return value && std::string(value) == "1";
 }
 
+#define SKIP_WITHOUT_SINGULAR()                                                                   \
+  do {                                                                                           \
+    if (!testing::singular_path()) {                                                             \
+      if (singular_required()) FAIL() << "Singular is required (SDFWB_REQUIRE_SINGULAR=1) but missing"; \
+      GTEST_SKIP() << "Singular is not installed";                                               \
+    }                                                                                            \
+  } while (false)
+
 TEST(SingularCrossCheck, ReducedBasesAgree) {
-  if (!testing::singular_path()) {
-    if (singular_required()) FAIL() << "Singular is required (SDFWB_REQUIRE_SINGULAR=1) but not installed";
-    GTEST_SKIP() << "Singular is not installed";
-  }
+  SKIP_WITHOUT_SINGULAR();
   for (const testing::NamedSystem& system : testing::small_systems()) {
     SCOPED_TRACE(system.name);
     GroebnerResult ours = groebner_basis(system.ideal);
@@ -32,6 +38,22 @@ TEST(SingularCrossCheck, ReducedBasesAgree) {
     ASSERT_EQ(ours.basis.size(), theirs.basis.size());
     for (std::size_t i = 0; i < ours.basis.size(); ++i) {
       EXPECT_EQ(ours.basis[i], theirs.basis[i]) << ours.basis[i] << "  vs  " << theirs.basis[i];
+    }
+  }
+}
+
+TEST(SingularCrossCheck, ImplicitEquationsAgree) {
+  SKIP_WITHOUT_SINGULAR();
+  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+    SCOPED_TRACE(example.name);
+    ImplicitizationResult ours = implicitize(example.parametrization);
+    ASSERT_TRUE(ours.ok()) << ours.message;
+    EliminationProblem problem = implicitization_ideal(example.parametrization);
+    testing::SingularResult theirs = testing::singular_eliminate(problem.ideal, problem.eliminated, ours.ring, 30);
+    ASSERT_TRUE(theirs.ok) << theirs.error;
+    ASSERT_EQ(ours.generators.size(), theirs.basis.size());
+    for (std::size_t i = 0; i < ours.generators.size(); ++i) {
+      EXPECT_EQ(ours.generators[i].monic(), theirs.basis[i]);
     }
   }
 }
