@@ -67,7 +67,7 @@ std::vector<std::string> var_names(const char* prefix, std::size_t n) {
   return names;
 }
 
-// Reads "TIME <ms>" and the lines between BEGIN and END.
+// Reads "TIME <wall ms> <cpu ms>" and the lines between BEGIN and END.
 SingularResult read_output(const std::string& output, const RingPtr& ring, const char* prefix,
                            std::string error) {
   SingularResult result;
@@ -78,7 +78,11 @@ SingularResult read_output(const std::string& output, const RingPtr& ring, const
   try {
     while (std::getline(in, line)) {
       if (line.rfind("TIME ", 0) == 0) {
-        result.seconds = std::stod(line.substr(5)) / 1000.0;
+        std::istringstream times(line.substr(5));
+        double wall_ms = 0, cpu_ms = 0;
+        times >> wall_ms >> cpu_ms;
+        result.seconds = wall_ms / 1000.0;
+        result.cpu_seconds = cpu_ms / 1000.0;
       } else if (line == "BEGIN") {
         inside = true;
       } else if (line == "END") {
@@ -205,7 +209,7 @@ Polynomial parse_singular_polynomial(const std::string& text, const RingPtr& rin
   return Polynomial(ring, std::move(terms));
 }
 
-SingularResult singular_std(const Ideal& ideal, double timeout_seconds) {
+SingularResult singular_std(const Ideal& ideal, double timeout_seconds, const std::string& command) {
   const Ring& ring = *ideal.ring();
   std::optional<std::string> order = singular_order(ring);
   if (!order) return SingularResult{false, "no Singular name for order " + ring.order().describe(), {}, 0};
@@ -218,7 +222,8 @@ SingularResult singular_std(const Ideal& ideal, double timeout_seconds) {
     script += (k ? ",\n  " : "") + as_singular(ideal.generators()[k], named);
   }
   if (ideal.generators().empty()) script += "0";
-  script += ";\nint t = rtimer;\nideal g = std(i);\nprint(\"TIME \" + string(rtimer - t));\n";
+  script += ";\nint t = rtimer;\nint c = timer;\nideal g = " + command + "(i);\n";
+  script += "print(\"TIME \" + string(rtimer - t) + \" \" + string(timer - c));\n";
   script += kPrintBasis;
   script += "quit;\n";
   std::string error;
@@ -254,10 +259,10 @@ SingularResult singular_eliminate(const Ideal& ideal, const std::vector<std::str
   for (std::size_t k = 0; k < ideal.generators().size(); ++k) {
     script += (k ? ",\n  " : "") + Polynomial(named, ideal.generators()[k].terms()).to_string();
   }
-  script += ";\nint t = rtimer;\nideal el = eliminate(i, " + product + ");\nring s = 0, (";
+  script += ";\nint t = rtimer;\nint c = timer;\nideal el = eliminate(i, " + product + ");\nring s = 0, (";
   for (std::size_t j = 0; j < target->size(); ++j) script += (j ? "," : "") + std::string("w") + std::to_string(j);
   script += "), " + *target_order + ";\nshort = 0;\noption(redSB);\nideal g = std(imap(r, el));\n";
-  script += "print(\"TIME \" + string(rtimer - t));\n";
+  script += "print(\"TIME \" + string(rtimer - t) + \" \" + string(timer - c));\n";
   script += kPrintBasis;
   script += "quit;\n";
   std::string error;

@@ -19,11 +19,12 @@ struct SingularResult {
   std::string error;               // why it failed (timeout, parse error, ...)
   std::vector<Polynomial> basis;   // monic, sorted by increasing leading monomial
   double seconds = 0;              // Singular's own wall-clock time for the command
+  double cpu_seconds = 0;          // and its CPU time
 };
 
-/// Reduced Groebner basis by Singular's std (option redSB) in the ideal's
-/// ring and order.
-SingularResult singular_std(const Ideal& ideal, double timeout_seconds = 60);
+/// Reduced Groebner basis by Singular (option redSB) in the ideal's ring and
+/// order; `command` is "std", or "stdfglm" (degrevlex, then FGLM).
+SingularResult singular_std(const Ideal& ideal, double timeout_seconds = 60, const std::string& command = "std");
 
 /// Generators of the elimination ideal I ∩ Q[remaining variables] by
 /// Singular's eliminate, followed by a reduced std in `target` (a ring with
