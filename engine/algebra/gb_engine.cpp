@@ -228,28 +228,27 @@ void Engine<D>::interreduce() {
 }
 
 template <class D>
-void Engine<D>::load_s_polynomial(const Pair& pair) {
+void Engine<D>::load_s_polynomial(std::uint32_t i, std::uint32_t j, const Word* lcm) {
   const std::size_t stride = layout_.stride();
-  const P& f = basis_[pair.i].poly;
-  const P& g = basis_[pair.j].poly;
+  const P& f = basis_[i].poly;
+  const P& g = basis_[j].poly;
   Coeff scale{}, multiplier{};
   domain_.cancel_factors(f.coeffs.front(), g.coeffs.front(), scale, multiplier);
   domain_.negate(multiplier);
   std::vector<Word> shift(stride);
-  const Word* l = pair_lcm(pair);
   bucket_.clear();
   if (f.size() > 1) {
-    layout_.divide(shift.data(), l, f.mons.data());
+    layout_.divide(shift.data(), lcm, f.mons.data());
     bucket_.add_multiple(f, 1, scale, shift.data());
   }
   if (g.size() > 1) {
-    layout_.divide(shift.data(), l, g.mons.data());
+    layout_.divide(shift.data(), lcm, g.mons.data());
     bucket_.add_multiple(g, 1, multiplier, shift.data());
   }
 }
 
 template <class D>
-std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
+void Engine<D>::load_generators(std::vector<P>& input) {
   const std::size_t stride = layout_.stride();
   for (P& f : input) {
     if (f.empty()) continue;
@@ -258,8 +257,25 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
     for (std::size_t t = 0; t < f.size(); ++t) degree = std::max(degree, layout_.sugar_degree(f.mon(t, stride)));
     f.sugar = degree;
     generators_.push_back(std::move(f));
-    const P& g = generators_.back();
-    push_pair(static_cast<std::uint32_t>(generators_.size() - 1), kGenerator, g.sugar, g.mons.data());
+  }
+}
+
+template <class D>
+std::vector<typename Engine<D>::P> Engine<D>::finish() {
+  interreduce();
+  std::vector<P> result;
+  for (std::uint32_t r : reducers_) result.push_back(std::move(basis_[r].poly));
+  std::sort(result.begin(), result.end(), [&](const P& a, const P& b) {
+    return layout_.compare(a.mons.data(), b.mons.data()) < 0;
+  });
+  return result;
+}
+
+template <class D>
+std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input, Trace* record) {
+  load_generators(input);
+  for (std::uint32_t g = 0; g < generators_.size(); ++g) {
+    push_pair(g, kGenerator, generators_[g].sugar, generators_[g].mons.data());
   }
   const auto later = [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); };
   while (!heap_.empty()) {
@@ -275,13 +291,14 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
       P copy = generators_[pair.i];
       bucket_.add(std::move(copy));
     } else {
-      load_s_polynomial(pair);
+      load_s_polynomial(pair.i, pair.j, pair_lcm(pair));
     }
     P h = reduce(P{}, pair.sugar);
     if (h.empty()) {
       ++stats_.zero_reductions;
       continue;
     }
+    if (record) record->steps.push_back({pair.i, pair.j, std::vector<Word>(h.mons.begin(), h.mons.begin() + layout_.stride())});
     if (layout_.degree(h.mons.data()) == 0) {
       // A nonzero constant: the ideal is the whole ring.
       for (std::uint32_t r : reducers_) basis_[r].redundant = true;
@@ -293,13 +310,50 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input) {
     }
     insert(std::move(h));
   }
-  interreduce();
-  std::vector<P> result;
-  for (std::uint32_t r : reducers_) result.push_back(std::move(basis_[r].poly));
-  std::sort(result.begin(), result.end(), [&](const P& a, const P& b) {
-    return layout_.compare(a.mons.data(), b.mons.data()) < 0;
-  });
-  return result;
+  return finish();
+}
+
+template <class D>
+std::optional<std::vector<typename Engine<D>::P>> Engine<D>::replay(std::vector<P> input, const Trace& trace) {
+  const std::size_t stride = layout_.stride();
+  load_generators(input);
+  std::vector<Word> lcm(stride);
+  for (const Trace::Step& step : trace.steps) {
+    monitor_.check(progress("replay"), own_bytes());
+    ++stats_.pairs_treated;
+    std::uint32_t sugar;
+    if (step.j == kGenerator) {
+      if (step.i >= generators_.size()) return std::nullopt;
+      bucket_.clear();
+      P copy = generators_[step.i];
+      sugar = copy.sugar;
+      bucket_.add(std::move(copy));
+    } else {
+      if (step.i >= basis_.size() || step.j >= basis_.size()) return std::nullopt;
+      layout_.lcm(lcm.data(), lead(step.i), lead(step.j));
+      load_s_polynomial(step.i, step.j, lcm.data());
+      sugar = std::max(basis_[step.i].poly.sugar, basis_[step.j].poly.sugar) + layout_.sugar_degree(lcm.data());
+    }
+    P h = reduce(P{}, sugar);
+    if (h.empty() || !std::equal(step.lead.begin(), step.lead.end(), h.mons.begin())) return std::nullopt;
+    // Like insert, without pairs: only the reducers need maintaining.
+    const auto k = static_cast<std::uint32_t>(basis_.size());
+    basis_bytes_ += h.bytes();
+    Element element{std::move(h), 0};
+    element.mask = layout_.divmask(element.poly.mons.data());
+    basis_.push_back(std::move(element));
+    std::vector<std::uint32_t> kept;
+    for (std::uint32_t r : reducers_) {
+      if (layout_.divides(lead(k), lead(r))) {
+        basis_[r].redundant = true;
+      } else {
+        kept.push_back(r);
+      }
+    }
+    kept.push_back(k);
+    reducers_ = std::move(kept);
+  }
+  return finish();
 }
 
 template <class D>
@@ -321,7 +375,7 @@ bool Engine<D>::is_groebner(std::vector<P> basis) {
     --live_pairs_;
     monitor_.check(progress("verification"), own_bytes());
     ++stats_.pairs_treated;
-    load_s_polynomial(pair);
+    load_s_polynomial(pair.i, pair.j, pair_lcm(pair));
     if (!reduce(P{}, pair.sugar).empty()) return false;
     ++stats_.zero_reductions;
   }

@@ -18,9 +18,23 @@
 #include "algebra/gb_bucket.h"
 #include "algebra/groebner_stats.h"
 
+#include <optional>
 #include <vector>
 
 namespace sdfwb::algebra::gb {
+
+/// The useful steps of one Buchberger run: which pair (or input generator)
+/// produced each new basis element, and its leading monomial. Modulo
+/// another (lucky) prime the same steps produce the same leading monomials,
+/// so a replay skips every pair that reduced to zero (Traverso's Groebner
+/// trace algorithm, "Groebner trace algorithms", 1989).
+struct Trace {
+  struct Step {
+    std::uint32_t i, j;  // basis indices, or j == generator marker: input generator i
+    std::vector<Word> lead;
+  };
+  std::vector<Step> steps;
+};
 
 template <class Domain>
 class Engine {
@@ -32,7 +46,15 @@ class Engine {
 
   /// The reduced Groebner basis of the input (zero polynomials ignored).
   /// Throws BudgetExceeded at a safe point when the budget runs out.
-  std::vector<P> groebner(std::vector<P> input);
+  /// If `record` is given, the useful steps are recorded into it.
+  std::vector<P> groebner(std::vector<P> input, Trace* record = nullptr);
+
+  /// The reduced basis from the steps of a trace recorded for the same
+  /// input modulo another prime; nullopt as soon as a step does not give the
+  /// recorded leading monomial (the trace does not fit this prime). The
+  /// result is only as good as the trace: the modular algorithm verifies
+  /// what it lifts.
+  std::optional<std::vector<P>> replay(std::vector<P> input, const Trace& trace);
 
   /// True if `basis` (nonzero, normalized polynomials) is a Groebner basis:
   /// every S-pair that survives the criteria reduces to zero. Use on a fresh
@@ -66,7 +88,7 @@ class Engine {
     std::size_t lcm;  // offset into lcm_store_
     bool alive = true;
   };
-  static constexpr std::uint32_t kGenerator = 0xffffffffu;
+  static constexpr std::uint32_t kGenerator = 0xffffffffu;  // also Trace::Step::j
   static constexpr std::size_t kContentBits = 64;
 
   const Word* lead(std::uint32_t element) const { return basis_[element].poly.mons.data(); }
@@ -74,8 +96,12 @@ class Engine {
   int find_reducer(const Word* mon, std::uint64_t mask) const;
   /// Reduces the bucket completely; `result` holds terms already final.
   P reduce(P result, std::uint32_t sugar, Coeff* scale_product = nullptr);
-  /// Clears the bucket and loads the S-polynomial of a pair of elements.
-  void load_s_polynomial(const Pair& pair);
+  /// Clears the bucket and loads the S-polynomial of elements i and j.
+  void load_s_polynomial(std::uint32_t i, std::uint32_t j, const Word* lcm);
+  /// Normalizes the input generators and sets their sugar.
+  void load_generators(std::vector<P>& input);
+  /// Interreduces and returns the non-redundant elements, sorted.
+  std::vector<P> finish();
   /// Divides the polynomial under reduction (result and bucket) by its content.
   void remove_content(P& result);
   void insert(P h);

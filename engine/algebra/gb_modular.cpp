@@ -301,6 +301,10 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
                                          BudgetMonitor& monitor, GroebnerStats& stats) {
   const Layout layout(*ring);
   Lifter lifter(layout, ring);
+  // The first prime runs Buchberger in full and records its useful steps;
+  // later primes replay them, skipping the pairs that reduce to zero. A
+  // replay that does not fit runs in full and records a new trace.
+  std::optional<Trace> trace;
   std::uint32_t p = 0x80000000u;
   for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
     p = previous_prime(p);
@@ -309,9 +313,24 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
     bool usable = true;
     for (std::size_t i = 0; i < input.size() && usable; ++i) usable = to_modular(input[i], layout, domain, reduced[i]);
     if (!usable) continue;
-    Engine<ModularDomain> engine(layout, domain, monitor);
-    std::vector<ModPoly> basis = engine.groebner(std::move(reduced));
-    if (stats.primes == 0) stats = engine.stats();  // the counters of one modular run
+    std::optional<std::vector<ModPoly>> replayed;
+    if (trace) {
+      Engine<ModularDomain> engine(layout, domain, monitor);
+      replayed = engine.replay(reduced, *trace);
+      if (replayed) ++stats.replays;
+    }
+    std::vector<ModPoly> basis;
+    if (replayed) {
+      basis = std::move(*replayed);
+    } else {
+      Engine<ModularDomain> engine(layout, domain, monitor);
+      trace.emplace();
+      basis = engine.groebner(std::move(reduced), &*trace);
+      const std::size_t primes = stats.primes, replays = stats.replays;
+      stats = engine.stats();  // the counters of the last full modular run
+      stats.primes = primes;
+      stats.replays = replays;
+    }
     ++stats.primes;
     if (const std::vector<Polynomial>* candidate = lifter.agreeing(basis, p)) {
       if (verify(layout, *candidate, input, monitor, stats)) return *candidate;

@@ -14,6 +14,7 @@ struct GroebnerStats {
   std::size_t max_basis_size = 0;       // largest intermediate basis
   std::size_t content_removals = 0;     // common factors divided out during reductions
   std::size_t primes = 0;               // modular method: primes used
+  std::size_t replays = 0;              // of those, computed by replaying a trace
   std::size_t verification_pairs = 0;   // modular method: S-pairs checked over Q
 };
 
