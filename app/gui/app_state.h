@@ -77,6 +77,8 @@ struct AppState {
     bool quit = false;
     int exitCode = 0;
     float frameSeconds = 0;
+    float slowestFrameSeconds = 0;  // over the last few seconds
+    double slowestFrameSince = 0;   // glfwGetTime() when that window started
 };
 
 }  // namespace sdfwb::app::gui

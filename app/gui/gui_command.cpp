@@ -145,6 +145,12 @@ void runFrame(AppState& app, Host& host) {
     }
     glfwSwapBuffers(app.window);
     app.frameSeconds = static_cast<float>(glfwGetTime() - start);
+    // the slowest frame of a 5-second window: shows whether the UI ever stalled
+    if (start - app.slowestFrameSince > 5.0) {
+        app.slowestFrameSince = start;
+        app.slowestFrameSeconds = 0;
+    }
+    app.slowestFrameSeconds = std::max(app.slowestFrameSeconds, app.frameSeconds);
 }
 
 }  // namespace

@@ -37,6 +37,7 @@ void Viewport::plan(const scene::Scene& scene, const ui::UiState& ui, int width,
     useGl_ = ui.backend == ui::ViewBackend::Gl || compare_;
     useCpu_ = ui.backend == ui::ViewBackend::Cpu || compare_;
     glShown_ = useGl_;
+    cpuFallback_ = false;
     heat_ = ui.stepHeat;
     width_ = std::max(1, ui.compare == ui::CompareMode::SideBySide ? width / 2 : width);
     height_ = std::max(1, height);
@@ -79,7 +80,18 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
         plan(scene, ui, width, height, interacting);
     }
     if (useGl_) updateGl(budgetSeconds);
-    if (useCpu_) updateCpu();
+    if (useGl_ && !compare_ && glStage_ == 0 && glWaiting_ && !cpuFallback_) {
+        cpuFallback_ = true;
+        glShown_ = false;
+        cpuTexture_.resize(width_, height_);
+    }
+    if (cpuFallback_ && glStage_ > 0 && error_.empty()) {  // the GL image is complete: it takes over
+        cpuFallback_ = false;
+        glShown_ = true;
+        cpuJobs_.cancelAll();
+    }
+    if (useCpu_ || cpuFallback_) updateCpu();
+    if (cpuFallback_ && glWaiting_) stats_.status = "compiling shader; CPU image meanwhile";
     if (!useGl_ || glStage_ >= stages_.size()) {
         if (!useCpu_ || cpuStage_ >= stages_.size()) stats_.status = error_.empty() ? "done" : "GL shader failed";
     }
@@ -105,7 +117,8 @@ void Viewport::updateGl(double budgetSeconds) {
                 glStage_ = stages_.size();  // nothing more to do until the structure changes
                 return;
             }
-            if (!renderer_.hasProgram(program)) {
+            glWaiting_ = !renderer_.hasProgram(program);
+            if (glWaiting_) {
                 builder_.request(program);
                 stats_.status = "compiling shader";
                 return;
@@ -166,7 +179,7 @@ void Viewport::updateCpu() {
             cpuJobs_.submit({planId_ * kStageTags + cpuStage_, programFor(stages_[cpuStage_])}, true);
             cpuSubmitted_ = true;
         }
-        if (!useGl_ || glStage_ >= stages_.size()) {
+        if (!useGl_ || glStage_ >= stages_.size() || cpuFallback_) {
             stats_.status = "CPU: rendering " + std::to_string(static_cast<int>(cpuJobs_.progress() * 100)) + "%";
         }
     }

@@ -3,8 +3,8 @@
 // view, in stages (a reduced-resolution AA 1 preview while the user
 // interacts; AA 1 then the scene's AA when idle), by the GLSL backend in the
 // window's context (progressive tiles within a per-frame budget, programs
-// built by a worker) or by the CPU backend on a worker thread, and both for
-// the compare view. The UI thread calls update() once per frame; nothing in
+// built by a worker; the CPU backend stands in while a program is built) or
+// by the CPU backend on a worker thread, and both for the compare view. The UI thread calls update() once per frame; nothing in
 // it waits on a render or a compile.
 
 #include <cstdint>
@@ -85,6 +85,11 @@ private:
     int width_ = 0, height_ = 0;
     bool useGl_ = true, useCpu_ = false, compare_ = false, heat_ = false;
     bool glShown_ = true;
+    // While the GL program for a new structure is still being built, the CPU
+    // backend renders the request meanwhile, so the viewport never sits on a
+    // stale or black image; the GL image replaces it once its first stage is done.
+    bool cpuFallback_ = false;
+    bool glWaiting_ = false;  // the GL stage waits for the builder
 
     size_t glStage_ = 0;
     std::unique_ptr<gl::ProgressiveRender> glJob_;

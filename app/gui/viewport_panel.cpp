@@ -75,7 +75,8 @@ void statsOverlay(AppState& app, ImVec2 corner) {
     ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(20, 22, 26, 160));
     ImGui::BeginChild("stats", size, false, ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
     bool gl = app.ui.backend == ui::ViewBackend::Gl || app.ui.compare != ui::CompareMode::Off;
-    ImGui::Text("frame %.1f ms   backend %s", app.frameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
+    ImGui::Text("frame %.0f ms (slowest %.0f)   backend %s", app.frameSeconds * 1000.0f,
+                app.slowestFrameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
     ImGui::Text("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa, s.renderSeconds * 1000.0,
                 s.gpuSeconds * 1000.0);
     ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
