@@ -46,7 +46,7 @@ class Bucket {
   /// Adds factor * shift * (terms [from, end) of p).
   void add_multiple(const Poly<Coeff>& p, std::size_t from, const Coeff& factor, const Word* shift) {
     const std::size_t stride = layout_.stride();
-    Poly<Coeff> product;
+    Poly<Coeff> product = acquire();
     product.mons.resize((p.size() - from) * stride);
     product.coeffs.resize(p.size() - from);
     for (std::size_t i = from; i < p.size(); ++i) {
@@ -128,9 +128,9 @@ class Bucket {
 
   Poly<Coeff> take(std::size_t i) {
     Level& level = levels_[i];
-    Poly<Coeff> p;
+    Poly<Coeff> p = acquire();
     if (level.head == 0) {
-      p = std::move(level.poly);
+      std::swap(p, level.poly);
     } else {
       const std::size_t stride = layout_.stride();
       p.mons.assign(level.poly.mons.begin() + static_cast<std::ptrdiff_t>(level.head * stride),
@@ -149,6 +149,7 @@ class Bucket {
   void merge_into(std::size_t i, Poly<Coeff>&& p) {
     Level& level = levels_[i];
     if (live(i) == 0) {
+      release(std::move(level.poly));
       level.poly = std::move(p);
       level.head = 0;
       return;
@@ -190,12 +191,30 @@ class Bucket {
     std::swap(a, out);
     level.head = 0;
     out.clear();
+    release(std::move(p));
+  }
+
+  // Polynomials whose storage is kept for reuse: a reduction creates and
+  // merges thousands of short-lived polynomials, and reusing their arrays
+  // saves most of the allocator traffic.
+  Poly<Coeff> acquire() {
+    if (pool_.empty()) return {};
+    Poly<Coeff> p = std::move(pool_.back());
+    pool_.pop_back();
+    return p;
+  }
+  void release(Poly<Coeff>&& p) {
+    if (pool_.size() >= kPoolSize || p.mons.capacity() == 0) return;
+    p.clear();
+    pool_.push_back(std::move(p));
   }
 
   const Layout& layout_;
   const Domain& domain_;
   std::vector<Level> levels_;
   Poly<Coeff> scratch_;  // reused merge buffer
+  static constexpr std::size_t kPoolSize = 16;
+  std::vector<Poly<Coeff>> pool_;
 };
 
 }  // namespace sdfwb::algebra::gb

@@ -20,13 +20,11 @@ Layout::Layout(const Ring& ring) : vars_(ring.size()) {
       keys_ > 0 && std::all_of(matrix_[0].begin(), matrix_[0].end(), [](Word w) { return w >= 0; }) &&
       std::any_of(matrix_[0].begin(), matrix_[0].end(), [](Word w) { return w > 0; });
   stride_ = keys_ + vars_;
-  // Spread 64 mask bits over the variables: with b bits per variable, bit k
-  // says "exponent > k" for k < b, so small exponents are told apart.
-  const std::size_t bits = vars_ == 0 ? 0 : std::max<std::size_t>(1, 64 / vars_);
-  mask_bits_.resize(vars_);
-  for (std::size_t v = 0; v < vars_ && v < 64; ++v) {
-    for (std::size_t k = 0; k < bits; ++k) mask_bits_[v].push_back(static_cast<std::int32_t>(k));
-  }
+  // Spread at most 63 mask bits over the variables: with b bits per
+  // variable, bit k says "exponent > k" for k < b, so small exponents are
+  // told apart. Variables beyond the 63rd get no bits.
+  mask_bits_ = vars_ == 0 ? 0 : std::max<std::size_t>(1, 63 / vars_);
+  mask_vars_ = std::min<std::size_t>(vars_, 63 / mask_bits_);
 }
 
 void Layout::lcm(Word* out, const Word* a, const Word* b) const {
@@ -45,14 +43,12 @@ void Layout::encode_keys(Word* out) const {
 }
 
 std::uint64_t Layout::divmask(const Word* m) const {
+  // Variable v owns bits [offset, offset + b): the lowest min(e_v, b) are set.
   std::uint64_t mask = 0;
-  unsigned bit = 0;
   const Word* e = m + keys_;
-  for (std::size_t v = 0; v < vars_; ++v) {
-    for (std::int32_t threshold : mask_bits_[v]) {
-      if (e[v] > threshold) mask |= std::uint64_t{1} << bit;
-      ++bit;
-    }
+  for (std::size_t v = 0; v < mask_vars_; ++v) {
+    const auto k = static_cast<unsigned>(std::min<Word>(e[v], static_cast<Word>(mask_bits_)));
+    mask |= ((std::uint64_t{1} << k) - 1) << (v * mask_bits_);
   }
   return mask;
 }

@@ -83,7 +83,8 @@ class Layout {
   std::size_t vars_, keys_, stride_;
   bool first_row_is_degree_ = false;
   std::vector<std::vector<Word>> matrix_;
-  std::vector<std::vector<std::int32_t>> mask_bits_;  // per variable: thresholds
+  std::size_t mask_bits_ = 0;  // divmask bits per variable
+  std::size_t mask_vars_ = 0;  // variables that get divmask bits
 };
 
 }  // namespace sdfwb::algebra::gb

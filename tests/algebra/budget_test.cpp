@@ -2,6 +2,8 @@
 // at a safe point with a clear "gave up after ..." result.
 
 #include "algebra/groebner.h"
+#include "algebra/ideal_operations.h"
+#include "algebra/implicitization.h"
 #include "example_systems.h"
 
 #include <gtest/gtest.h>
@@ -60,6 +62,24 @@ TEST(Budget, CancelledFromAnotherThread) {
   GroebnerResult r = groebner_basis(hard_system(), options);
   canceller.join();
   EXPECT_EQ(r.status, Status::cancelled) << r.message;
+}
+
+TEST(Budget, ImplicitizationAndIdealOperationsReportGivingUp) {
+  ImplicitizationOptions options;
+  options.groebner.budget.time_limit_seconds = 0.005;
+  // The half-angle cross-cap takes a few hundred milliseconds.
+  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+    if (example.name != "cross-cap/half-angle") continue;
+    ImplicitizationResult r = implicitize(example.parametrization, options);
+    EXPECT_EQ(r.status, Status::time_limit);
+    EXPECT_TRUE(r.generators.empty());
+    EXPECT_EQ(r.message.rfind("gave up after ", 0), 0u) << r.message;
+  }
+  GroebnerOptions quick;
+  quick.budget.time_limit_seconds = 0.05;
+  Decision d = contains(hard_system(), hard_system().ring()->one(), quick);
+  EXPECT_EQ(d.status, Status::time_limit);
+  EXPECT_FALSE(d.ok());
 }
 
 TEST(Budget, ProgressReportsBasisAndPairs) {
