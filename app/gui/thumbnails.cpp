@@ -12,6 +12,11 @@ Thumbnails::Thumbnails(const glcontext::GlFunctions& gl) : gl_(gl) {}
 
 void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, const ui::NodePath& path,
                          const scene::Node& node) {
+    auto previous = shown_.find(path);
+    if (paused_) {
+        // no hashing or queueing while the user drags: the last images stay
+        return previous == shown_.end() ? nullptr : textures_.at(previous->second)->id();
+    }
     if (revision != revision_) {
         revision_ = revision;
         keys_.clear();
@@ -42,11 +47,11 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         program::CompileOptions options{kSize, kSize, 1};
         jobs_.submit({key, program::compileScene(alone, options)}, false);
     }
-    auto previous = shown_.find(path);
     return previous == shown_.end() ? nullptr : textures_.at(previous->second)->id();
 }
 
 void Thumbnails::update(bool paused) {
+    paused_ = paused;
     jobs_.setPaused(paused);
     for (CpuResult& result : jobs_.takeResults()) {
         auto texture = std::make_unique<DisplayTexture>(gl_);

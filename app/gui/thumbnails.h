@@ -26,7 +26,8 @@ public:
     // `revision` identifies the scene state (the hashes are kept per revision).
     void* lookup(const scene::Scene& scene, std::uint64_t revision, const ui::NodePath& path,
                  const scene::Node& node);
-    // Uploads finished renders; queued renders wait while `paused`.
+    // Uploads finished renders; while `paused`, queued renders wait and
+    // lookups show the last images without hashing or queueing anything.
     void update(bool paused);
     // No thumbnail render is queued or running.
     bool idle() const { return !jobs_.busy(); }
@@ -36,6 +37,7 @@ private:
     CpuJobQueue jobs_{1};
     std::map<std::uint64_t, std::unique_ptr<DisplayTexture>> textures_;
     std::set<std::uint64_t> requested_;
+    bool paused_ = false;
     std::uint64_t revision_ = 0;
     std::uint64_t lookHash_ = 0;  // materials, lights, environment
     std::map<ui::NodePath, std::uint64_t> keys_;
