@@ -44,22 +44,22 @@ inline Sample mapProgram(const program::Program& program, const vec4* params, Sc
         case Opcode::Mirror: points[in.dst] = instMirror(p, q[0]); break;
         case Opcode::Repeat: points[in.dst] = instRepeat(p, q[0], q[1]); break;
         case Opcode::RepeatInfinite: points[in.dst] = instRepeatInfinite(p, q[0]); break;
-        case Opcode::Sphere: samples[in.dst] = Sample(instSphere(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Box: samples[in.dst] = Sample(instBox(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::RoundBox: samples[in.dst] = Sample(instRoundBox(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Plane: samples[in.dst] = Sample(instPlane(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Torus: samples[in.dst] = Sample(instTorus(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Cone: samples[in.dst] = Sample(instCone(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Ellipsoid: samples[in.dst] = Sample(instEllipsoid(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Cylinder: samples[in.dst] = Sample(instCylinder(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Capsule: samples[in.dst] = Sample(instCapsule(p, q[0], q[1]), materialAtSlot(params, in.material)); break;
+        case Opcode::Sphere: samples[in.dst] = shapeSample(instSphere(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Box: samples[in.dst] = shapeSample(instBox(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::RoundBox: samples[in.dst] = shapeSample(instRoundBox(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Plane: samples[in.dst] = shapeSample(instPlane(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Torus: samples[in.dst] = shapeSample(instTorus(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Cone: samples[in.dst] = shapeSample(instCone(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Ellipsoid: samples[in.dst] = shapeSample(instEllipsoid(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Cylinder: samples[in.dst] = shapeSample(instCylinder(p, q[0]), materialAtSlot(params, in.material)); break;
+        case Opcode::Capsule: samples[in.dst] = shapeSample(instCapsule(p, q[0], q[1]), materialAtSlot(params, in.material)); break;
         case Opcode::Ground: samples[in.dst] = instGround(p, q[0], q[1], q[2], materialAtSlot(params, in.material)); break;
         case Opcode::SdfFormula:
-            samples[in.dst] = Sample(instSdfFormula(scratch.formula(in.variant, p)[0]), materialAtSlot(params, in.material));
+            samples[in.dst] = shapeSample(instSdfFormula(scratch.formula(in.variant, p)[0]), materialAtSlot(params, in.material));
             break;
         case Opcode::ImplicitFormula: {
             std::span<const real> v = scratch.formula(in.variant, p);
-            samples[in.dst] = Sample(instImplicit(p, vec4(v[0], v[1], v[2], v[3]), q[0], q[1]),
+            samples[in.dst] = shapeSample(instImplicit(p, vec4(v[0], v[1], v[2], v[3]), q[0], q[1]),
                                      materialAtSlot(params, in.material));
             break;
         }
@@ -96,7 +96,7 @@ inline SampleResult traceSample(const program::Program& program, const vec4* par
                                 real py) {
     Ray ray = cameraRay(camera, px, py, real(program.width), real(program.height));
     TraceState s = traceBegin(ray);
-    Sample field = Sample(real(0), s.material);
+    Sample field = shapeSample(real(0), s.material);
     Light noLight = Light(vec3(real(0), real(1), real(0)), vec3(real(0)), real(1));
     while (s.phase != PHASE_DONE) {
         Light light = settings.lightCount > 0 ? lights[lightIndex(s) < settings.lightCount ? lightIndex(s) : 0] : noLight;

@@ -67,7 +67,7 @@ void main() {
     real py = gl_FragCoord.y + subsampleOffset(uSubsample.y, uAA);
     Ray ray = cameraRay(camera, px, py, uResolution.x, uResolution.y);
     TraceState s = traceBegin(ray);
-    Sample field = Sample(real(0), s.material);
+    Sample field = shapeSample(real(0), s.material);
     int limit = traceIterationBound(settings);
     for (int i = 0; i < limit; ++i) {
         if (s.phase == PHASE_DONE) {
@@ -101,12 +101,12 @@ void emitInstruction(std::ostringstream& out, const Instruction& in) {
     const program::OpcodeInfo& info = opcodeInfo(in.op);
     std::string fn(info.function);
     if (in.op == program::Opcode::SdfFormula) {
-        out << "    " << sample(in.dst) << " = Sample(" << fn << "(" << formulaName(in.variant) << "(" << point(in.a)
+        out << "    " << sample(in.dst) << " = shapeSample(" << fn << "(" << formulaName(in.variant) << "(" << point(in.a)
             << ")), M(" << in.material << "));\n";
         return;
     }
     if (in.op == program::Opcode::ImplicitFormula) {
-        out << "    " << sample(in.dst) << " = Sample(" << fn << "(" << point(in.a) << ", "
+        out << "    " << sample(in.dst) << " = shapeSample(" << fn << "(" << point(in.a) << ", "
             << formulaName(in.variant) << "(" << point(in.a) << ")" << slots(in) << "), M(" << in.material << "));\n";
         return;
     }
@@ -119,7 +119,7 @@ void emitInstruction(std::ostringstream& out, const Instruction& in) {
             out << "    " << sample(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ", M("
                 << in.material << "));\n";
         } else {
-            out << "    " << sample(in.dst) << " = Sample(" << fn << "(" << point(in.a) << slots(in) << "), M("
+            out << "    " << sample(in.dst) << " = shapeSample(" << fn << "(" << point(in.a) << slots(in) << "), M("
                 << in.material << "));\n";
         }
         break;

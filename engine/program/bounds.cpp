@@ -89,7 +89,8 @@ Bounds nodeBounds(const Node& node) {
         return symmetric(dvec3(R + r, r, R + r));
     }
     case NodeKind::Cone: {
-        double h = node.real("height"), w = h * std::tan(node.real("angle") * M_PI / 180.0);
+        // the side satisfies r sin(angle) + y cos(angle) = 0: radius h / tan(angle) at the base y = -h
+        double h = node.real("height"), w = h / std::tan(node.real("angle") * M_PI / 180.0);
         return Bounds::box(dvec3(-w, -h, -w), dvec3(w, 0.0, w));
     }
     case NodeKind::Ellipsoid: return symmetric(node.vec3("radii"));

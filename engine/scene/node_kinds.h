@@ -24,7 +24,7 @@ enum class NodeKind {
     Twist, Bend, Round, Displace, Elongate,
     // repetition
     Mirror, Repeat, RepeatInfinite,
-    // primitives given by a formula (docs/formula-language.md)
+    // primitives given by a formula (docs/expression-language.md, docs/implicit-surfaces.md)
     Sdf, Implicit, Polynomial,
 };
 inline constexpr int kNodeKindCount = static_cast<int>(NodeKind::Polynomial) + 1;

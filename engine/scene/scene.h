@@ -36,7 +36,7 @@ struct Node {
 struct Camera {
     glm::dvec3 target{0.0, 0.5, 0.0};
     double azimuth = 30.0;    // degrees, about +y, 0 looks along -z
-    double elevation = 20.0;  // degrees above the horizon, clamped short of +-90
+    double elevation = 20.0;  // degrees above the horizon, -90 to 90 (the frame stays valid at +-90)
     double distance = 6.0;    // from target to eye
     double fov = 45.0;        // vertical field of view, degrees
 

@@ -20,7 +20,7 @@ SHARED_FN vec3 instMirror(vec3 p, vec4 q0) { return opMirror(p, xyz(q0)); }
 SHARED_FN vec3 instRepeat(vec3 p, vec4 q0, vec4 q1) { return opRepeat(p, xyz(q0), xyz(q1)); }
 SHARED_FN vec3 instRepeatInfinite(vec3 p, vec4 q0) { return opRepeatInfinite(p, xyz(q0)); }
 
-// ---- Shape: S[dst] = Sample(f(P[a], slots), material) ----
+// ---- Shape: S[dst] = shapeSample(f(P[a], slots), material) ----
 SHARED_FN real instSphere(vec3 p, vec4 q0) { return sdSphere(p, q0.x); }
 SHARED_FN real instBox(vec3 p, vec4 q0) { return sdBox(p, xyz(q0)); }
 SHARED_FN real instRoundBox(vec3 p, vec4 q0) { return sdRoundBox(p, xyz(q0), q0.w); }
@@ -54,34 +54,42 @@ SHARED_FN real instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1) {
 SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
     real d = p.y - q0.x;
     Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2));
-    return Sample(d, m);
+    return shapeSample(d, m);
 }
 
-// ---- Combine: S[dst] = f(S[a], S[b], slot) ----
-SHARED_FN Sample instUnion(Sample a, Sample b) { return blendSamples(a, b, hardMin(a.d, b.d)); }
-SHARED_FN Sample instIntersection(Sample a, Sample b) { return blendSamples(a, b, hardMax(a.d, b.d)); }
-SHARED_FN Sample instDifference(Sample a, Sample b) { return blendSamples(a, b, hardMax(a.d, -b.d)); }
+// ---- Combine: S[dst] = f(S[a], S[b], slot); the same operator on both channels ----
+SHARED_FN Sample instUnion(Sample a, Sample b) {
+    return blendSamples(a, b, hardMin(a.d, b.d), hardMin(a.step, b.step));
+}
+SHARED_FN Sample instIntersection(Sample a, Sample b) {
+    return blendSamples(a, b, hardMax(a.d, b.d), hardMax(a.step, b.step));
+}
+SHARED_FN Sample instDifference(Sample a, Sample b) {
+    return blendSamples(a, b, hardMax(a.d, -b.d), hardMax(a.step, -b.step));
+}
 // q0 = (k, exponent)
 SHARED_FN Sample instSmoothUnion(Sample a, Sample b, vec4 q0, int variant) {
-    return blendSamples(a, b, smoothMin(variant, a.d, b.d, q0.x, q0.y));
+    return blendSamples(a, b, smoothMin(variant, a.d, b.d, q0.x, q0.y), smoothMin(variant, a.step, b.step, q0.x, q0.y));
 }
 SHARED_FN Sample instSmoothIntersection(Sample a, Sample b, vec4 q0, int variant) {
-    return blendSamples(a, b, smoothMax(variant, a.d, b.d, q0.x, q0.y));
+    return blendSamples(a, b, smoothMax(variant, a.d, b.d, q0.x, q0.y), smoothMax(variant, a.step, b.step, q0.x, q0.y));
 }
 SHARED_FN Sample instSmoothDifference(Sample a, Sample b, vec4 q0, int variant) {
-    return blendSamples(a, b, smoothMax(variant, a.d, -b.d, q0.x, q0.y));
+    return blendSamples(a, b, smoothMax(variant, a.d, -b.d, q0.x, q0.y), smoothMax(variant, a.step, -b.step, q0.x, q0.y));
 }
 
 // ---- Post: S[dst] = f(S[a], P[b], slot) ----
-SHARED_FN Sample withDistance(Sample s, real d) { return Sample(d, s.material); }
-SHARED_FN Sample instScaleDistance(Sample s, vec3 p, vec4 q0) { return withDistance(s, s.d * q0.x); }
-SHARED_FN Sample instRoundDistance(Sample s, vec3 p, vec4 q0) { return withDistance(s, s.d - q0.x); }
+SHARED_FN Sample withDistances(Sample s, real d, real step) { return Sample(d, step, s.material); }
+SHARED_FN Sample instScaleDistance(Sample s, vec3 p, vec4 q0) { return withDistances(s, s.d * q0.x, s.step * q0.x); }
+SHARED_FN Sample instRoundDistance(Sample s, vec3 p, vec4 q0) { return withDistances(s, s.d - q0.x, s.step - q0.x); }
 // q0 = (amplitude, frequency, step factor)
 SHARED_FN Sample instDisplace(Sample s, vec3 p, vec4 q0) {
-    return withDistance(s, (s.d + displacementPattern(p, q0.x, q0.y)) * q0.z);
+    real pattern = displacementPattern(p, q0.x, q0.y);
+    return withDistances(s, s.d + pattern, (s.step + pattern) * q0.z);
 }
-SHARED_FN Sample instStepScale(Sample s, vec3 p, vec4 q0) { return withDistance(s, s.d * q0.x); }
+// Twist and bend: only the step shrinks (q0.x = 1 / Lipschitz bound).
+SHARED_FN Sample instStepScale(Sample s, vec3 p, vec4 q0) { return withDistances(s, s.d, s.step * q0.x); }
 
 // ---- Constant ----
 // "Nothing here": far beyond any max distance.
-SHARED_FN Sample instEmpty(Material base) { return Sample(real(1e10), base); }
+SHARED_FN Sample instEmpty(Material base) { return shapeSample(real(1e10), base); }

@@ -20,13 +20,22 @@ SHARED_FN Material mixMaterial(Material a, Material b, real w) {
                     lerp3s(a.emission, b.emission, w));
 }
 
+// A point of the scene's field. `d` is the distance estimate the tracer tests
+// hits, shades and shadows with; `step` is a safe step: the same expression
+// evaluated on distances divided by the Lipschitz bound of the operators that
+// stretch space (twist, bend, displace). So a twisted sphere keeps its size and
+// shading, and only the march slows down where space is stretched.
 struct Sample {
     real d;
+    real step;
     Material material;
 };
 
-SHARED_FN Sample blendSamples(Sample a, Sample b, Blend blend) {
-    return Sample(blend.d, mixMaterial(a.material, b.material, blend.w));
+SHARED_FN Sample shapeSample(real d, Material material) { return Sample(d, d, material); }
+
+// `blend` combines the distances (and gives the material weight), `steps` the safe steps.
+SHARED_FN Sample blendSamples(Sample a, Sample b, Blend blend, Blend steps) {
+    return Sample(blend.d, steps.d, mixMaterial(a.material, b.material, blend.w));
 }
 
 // Ground patterns: 0 plain, 1 checker, 2 grid. The pattern replaces the diffuse

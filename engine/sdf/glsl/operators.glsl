@@ -1,5 +1,5 @@
 // Operators on distances and on points (thesis, section 1.3).
-// Smooth booleans take a blend radius k in distance units; docs/sdf-reference.md
+// Smooth booleans take a blend radius k in distance units; docs/scene-format.md
 // gives the mapping from k to each variant's own parameter. Every smooth minimum
 // also returns its blend weight: the partial derivative of the result with respect
 // to the second operand, in [0, 1], used to mix the operands' materials.

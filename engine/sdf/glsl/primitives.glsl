@@ -1,4 +1,4 @@
-// Signed distance primitives (thesis, section 1; exactness labels in docs/sdf-reference.md).
+// Signed distance primitives (thesis, section 1; exactness labels in docs/scene-format.md).
 // Every primitive is centred at the origin of its own frame.
 
 // exact

@@ -182,20 +182,20 @@ SHARED_FN TraceState beginOcclusion(TraceState s, TraceSettings settings) {
 
 // Out of steps, a ray that grazes a surface (a floor towards the horizon) is
 // still closing in on it: its distances shrink geometrically with ratio
-// q = d_n / d_(n-1), so it would arrive after about d / (1 - q) more. It counts
-// as a hit when that lands within max distance.
-SHARED_FN bool convergesWithin(TraceState s, real d, TraceSettings settings) {
-    if (!(s.lastDistance > real(0)) || !(d < s.lastDistance)) {
+// q = d_n / d_(n-1), so it would arrive after about step / (1 - q) more. It
+// counts as a hit when that lands within max distance.
+SHARED_FN bool convergesWithin(TraceState s, Sample field, TraceSettings settings) {
+    if (!(s.lastDistance > real(0)) || !(field.d < s.lastDistance)) {
         return false;
     }
-    real ratio = d / s.lastDistance;
-    return s.t + d / (real(1) - ratio) <= settings.maxDistance;
+    real ratio = field.d / s.lastDistance;
+    return s.t + field.step / (real(1) - ratio) <= settings.maxDistance;
 }
 
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
     s.steps = s.steps + 1;
     real epsilon = hitEpsilonAt(settings, s.t);
-    if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s, field.d, settings))) {
+    if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s, field, settings))) {
         s.hit = true;
         s.hitPoint = s.rayOrigin + s.rayDirection * s.t;
         s.hitEpsilon = epsilon;
@@ -205,7 +205,8 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         s.normalSum = vec3(real(0));
         return s;
     }
-    s.t = s.t + field.d;
+    // the safe step, and at least a fraction of epsilon so the march never stalls
+    s.t = s.t + max(field.step, real(0.25) * epsilon);
     s.lastDistance = field.d;
     if (s.t > settings.maxDistance || s.steps >= settings.maxSteps) {
         s.color = settings.background;
@@ -248,7 +249,7 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
         if (s.shadowT > real(0)) {
             s.shadowResult = min(s.shadowResult, light.softness * d / s.shadowT);
         }
-        s.shadowT = s.shadowT + max(abs(d), s.hitEpsilon);
+        s.shadowT = s.shadowT + max(abs(field.step), s.hitEpsilon);
         if (s.shadowResult < real(-1) || s.shadowT > settings.maxDistance || exhausted) {
             real clamped = max(s.shadowResult, real(-1));
             return finishLight(s, light, settings, smoothstepr(real(-1), real(1), clamped));
@@ -261,7 +262,7 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
     if (settings.shadowMode == SHADOW_SOFT && s.shadowT > real(0)) {
         s.shadowResult = min(s.shadowResult, light.softness * d / s.shadowT);
     }
-    s.shadowT = s.shadowT + d;
+    s.shadowT = s.shadowT + max(field.step, real(0.25) * s.hitEpsilon);
     if (s.shadowT > settings.maxDistance || exhausted) {
         return finishLight(s, light, settings, saturate(s.shadowResult));
     }
