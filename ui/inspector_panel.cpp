@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/formula_field.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
 
@@ -109,6 +110,9 @@ void fieldWidget(Editor& editor, UiState& ui, const NodePath& path, const FieldS
     }
     case FieldType::Material:
         materialCombo(editor, ui, path, field, std::get<std::string>(value));
+        break;
+    case FieldType::Formula:
+        drawFormulaField(editor, ui, path, field, std::get<std::string>(value));
         break;
     }
 }

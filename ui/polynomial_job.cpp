@@ -1,0 +1,182 @@
+#include "ui/polynomial_job.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <vector>
+
+#include <glm/common.hpp>
+
+#include "algebra/implicitization.h"
+#include "expr/formula.h"
+#include "expr/tape.h"
+
+namespace sdfwb::ui {
+namespace {
+
+// Keeps a runaway computation from exhausting the machine (as the CLI does).
+constexpr std::size_t kMemoryLimitBytes = std::size_t(8) << 30;
+
+std::string summary(const PolynomialOutcome& o) {
+    char text[160];
+    std::snprintf(text, sizeof text, "degree %llu, %zu term%s, %.3f s", static_cast<unsigned long long>(o.degree),
+                  o.terms, o.terms == 1 ? "" : "s", o.seconds);
+    std::string line = text;
+    if (o.generators.size() > 1) {
+        line += ", " + std::to_string(o.generators.size()) + " generators (a curve: all of them vanish on it)";
+    }
+    if (o.generators.empty()) line += ", no equation: the image is dense";
+    return line;
+}
+
+}  // namespace
+
+PolynomialOutcome computePolynomial(const PolynomialRequest& request, const algebra::Budget& budget) {
+    PolynomialOutcome out;
+    try {
+        expr::TrigConversion conversion = expr::parseParametrization(request.equations, request.trig);
+        algebra::ImplicitizationOptions options;
+        options.groebner.budget = budget;
+        algebra::ImplicitizationResult result = algebra::implicitize(conversion.parametrization, options);
+        out.seconds = result.seconds;
+        if (!result.ok()) {
+            out.message = result.message.empty() ? algebra::to_string(result.status) : result.message;
+            return out;
+        }
+        for (const algebra::Polynomial& g : result.generators) {
+            out.degree = std::max(out.degree, g.total_degree());
+            out.terms += g.term_count();
+            out.generators.push_back(g.to_string());
+        }
+        if (request.parameterRange) {
+            out.bounds = sampledBounds(request.equations, request.parameterRange->first, request.parameterRange->second);
+        }
+        out.ok = true;
+        out.message = summary(out);
+    } catch (const std::exception& error) {
+        out.message = error.what();
+    }
+    return out;
+}
+
+std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view equations, double lo, double hi) {
+    expr::ParametricEquations parsed = expr::compileParametricEquations(equations);
+    std::vector<expr::NodeId> outputs;
+    std::vector<int> axis;
+    for (const expr::CoordinateEquation& e : parsed.equations) {
+        outputs.push_back(e.value);
+        axis.push_back(e.coordinate[0] - 'x');
+    }
+    expr::Tape tape(parsed.graph, outputs);
+    expr::Evaluator<double> evaluate(tape);
+    const std::size_t parameters = tape.variables().size();
+    // 33 samples per parameter for curves and surfaces, fewer beyond
+    const int steps = parameters <= 2 ? 32 : 12;
+    std::size_t count = 1;
+    for (std::size_t i = 0; i < parameters; ++i) count *= steps + 1;
+    glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+    std::vector<double> values(parameters);
+    bool any = false;
+    for (std::size_t index = 0; index < count; ++index) {
+        std::size_t rest = index;
+        for (std::size_t i = 0; i < parameters; ++i) {
+            values[i] = lo + (hi - lo) * static_cast<double>(rest % (steps + 1)) / steps;
+            rest /= steps + 1;
+        }
+        std::span<const double> point = evaluate(values);
+        glm::dvec3 p(0.0);  // a coordinate without an equation stays 0
+        bool finite = true;
+        for (std::size_t k = 0; k < point.size(); ++k) {
+            finite = finite && std::isfinite(point[k]);
+            p[axis[k]] = point[k];
+        }
+        if (!finite) continue;
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+        any = true;
+    }
+    if (!any) return std::nullopt;
+    for (int k = 0; k < 3; ++k) {
+        // a flat direction (a plane, a curve) still needs a box with volume
+        double pad = std::max(0.05 * (high[k] - low[k]), 0.05);
+        low[k] -= pad;
+        high[k] += pad;
+    }
+    return std::pair{low, high};
+}
+
+scene::Node polynomialNode(const PolynomialOutcome& outcome) {
+    scene::Node node = scene::Node::make(scene::NodeKind::Polynomial);
+    node.name = "polynomial";
+    node.set("formula", outcome.generators.at(0));
+    if (outcome.bounds) {
+        node.set("bounds_min", outcome.bounds->first);
+        node.set("bounds_max", outcome.bounds->second);
+    }
+    return node;
+}
+
+PolynomialJob::~PolynomialJob() {
+    cancel();
+    wait();
+}
+
+void PolynomialJob::start(PolynomialRequest request) {
+    cancel();
+    wait();
+    cancel_ = std::make_shared<algebra::CancelToken>();
+    {
+        std::lock_guard lock(shared_->mutex);
+        shared_->running = true;
+        shared_->progress = {};
+        shared_->started = std::chrono::steady_clock::now();
+    }
+    algebra::Budget budget;
+    budget.time_limit_seconds = request.timeLimitSeconds;
+    budget.memory_limit_bytes = kMemoryLimitBytes;
+    budget.cancel = cancel_;
+    budget.progress_interval_seconds = 0.1;
+    std::shared_ptr<Shared> shared = shared_;
+    budget.on_progress = [shared](const algebra::Progress& p) {
+        std::lock_guard lock(shared->mutex);
+        shared->progress = {p.elapsed_seconds, p.basis_size, p.pairs_left, p.stage};
+    };
+    worker_ = std::thread([shared, request = std::move(request), budget = std::move(budget)] {
+        PolynomialOutcome outcome = computePolynomial(request, budget);
+        std::lock_guard lock(shared->mutex);
+        shared->outcome = std::move(outcome);
+        shared->running = false;
+    });
+}
+
+void PolynomialJob::cancel() {
+    if (cancel_) cancel_->cancel();
+}
+
+bool PolynomialJob::running() const {
+    std::lock_guard lock(shared_->mutex);
+    return shared_->running;
+}
+
+PolynomialProgress PolynomialJob::progress() const {
+    std::lock_guard lock(shared_->mutex);
+    PolynomialProgress now = shared_->progress;
+    // the engine reports every 0.1 s at best; the clock keeps moving between
+    if (shared_->running) {
+        now.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - shared_->started).count();
+    }
+    return now;
+}
+
+std::optional<PolynomialOutcome> PolynomialJob::outcome() const {
+    std::lock_guard lock(shared_->mutex);
+    return shared_->outcome;
+}
+
+void PolynomialJob::wait() {
+    if (worker_.joinable()) worker_.join();
+}
+
+}  // namespace sdfwb::ui

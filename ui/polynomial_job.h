@@ -1,0 +1,103 @@
+#pragma once
+// The polynomial panel's background work, apart from its widgets: implicitize
+// parametric equations on a worker thread under a Budget (cancel flag, time
+// and memory limits), publish its progress for the UI thread to read each
+// frame, and turn the result into a `polynomial` scene node.
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include <glm/vec3.hpp>
+
+#include "algebra/budget.h"
+#include "expr/trig.h"
+#include "scene/scene.h"
+
+namespace sdfwb::ui {
+
+struct PolynomialRequest {
+    std::string equations = "x = u*v; y = v; z = u^2";
+    expr::TrigStrategy trig = expr::TrigStrategy::CosSinRelation;
+    // When set, every parameter runs over [first, second] and the node's
+    // bounds are the sampled image of that box; otherwise the node's defaults.
+    std::optional<std::pair<double, double>> parameterRange;
+    double timeLimitSeconds = 60;  // s
+};
+
+struct PolynomialOutcome {
+    bool ok = false;
+    // ok: a summary ("degree 3, 4 terms, 0.002 s"); else the parse error or
+    // "gave up after ..." / "cancelled" message, one line.
+    std::string message;
+    // The generators as the formula language reads them (Polynomial::to_string).
+    std::vector<std::string> generators;
+    std::uint64_t degree = 0;  // the largest total degree
+    std::size_t terms = 0;     // summed over the generators
+    double seconds = 0;
+    // The sampled image of the parameter box, padded; absent without a range.
+    std::optional<std::pair<glm::dvec3, glm::dvec3>> bounds;
+
+    // Exactly one generator: a surface F = 0 a polynomial node can show.
+    bool isSurface() const { return ok && generators.size() == 1; }
+};
+
+// A snapshot of a running job, safe to read from the UI thread.
+struct PolynomialProgress {
+    double elapsedSeconds = 0;  // since start(), live while running
+    std::size_t basisSize = 0;
+    std::size_t pairsLeft = 0;
+    std::string stage;
+};
+
+// One computation at a time. The worker never touches the scene: the UI
+// thread polls outcome() and adds the node through the Editor itself.
+class PolynomialJob {
+public:
+    PolynomialJob() = default;
+    PolynomialJob(const PolynomialJob&) = delete;
+    PolynomialJob& operator=(const PolynomialJob&) = delete;
+    // Cancels a running computation and waits for it (it stops at the
+    // engine's next safe point).
+    ~PolynomialJob();
+
+    // Starts `request` (cancelling and waiting for a running one first).
+    void start(PolynomialRequest request);
+    // Asks the worker to stop; outcome() then reports "cancelled".
+    void cancel();
+    bool running() const;
+    PolynomialProgress progress() const;
+    // The last finished computation's result (nullopt while none finished).
+    std::optional<PolynomialOutcome> outcome() const;
+    // Waits for the worker (tests; the UI polls instead).
+    void wait();
+
+private:
+    struct Shared {
+        mutable std::mutex mutex;
+        bool running = false;
+        std::chrono::steady_clock::time_point started;
+        PolynomialProgress progress;
+        std::optional<PolynomialOutcome> outcome;
+    };
+    std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
+    std::shared_ptr<algebra::CancelToken> cancel_;
+    std::thread worker_;
+};
+
+// Runs a request on the calling thread (the worker's body).
+PolynomialOutcome computePolynomial(const PolynomialRequest& request, const algebra::Budget& budget);
+
+// The image of the parameter box [lo, hi]^n under the equations, sampled on a
+// grid and padded by 5% (at least 0.05) per axis; nullopt when no sample is finite.
+std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view equations, double lo, double hi);
+
+// A `polynomial` node named "polynomial" with the outcome's generator as its
+// formula and its bounds when sampled. Requires outcome.isSurface().
+scene::Node polynomialNode(const PolynomialOutcome& outcome);
+
+}  // namespace sdfwb::ui
