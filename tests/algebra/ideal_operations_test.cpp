@@ -76,3 +76,26 @@ TEST_F(IdealOperations, GcdAndLcm) {
 
 }  // namespace
 }  // namespace sdfwb::algebra
+
+namespace sdfwb::algebra {
+namespace {
+
+TEST(IdealEdgeCases, EmptyAndTrivial) {
+  auto r = Ring::make({"x", "y"}, MonomialOrder::lex());
+  Polynomial x = r->var("x"), y = r->var("y");
+  EXPECT_TRUE(groebner_basis(Ideal(r, {})).basis.empty());
+  // Eliminating every variable leaves the constants: 1 for the unit ideal,
+  // nothing for a proper ideal.
+  GroebnerResult all = eliminate(Ideal(r, {x * y - 1, x - y}), {"x", "y"});
+  ASSERT_TRUE(all.ok());
+  EXPECT_TRUE(all.basis.empty());
+  GroebnerResult unit = eliminate(Ideal(r, {x * y - 1, x}), {"x", "y"});
+  ASSERT_EQ(unit.basis.size(), 1u);
+  EXPECT_EQ(unit.basis.front().to_string(), "1");
+  auto one = Ring::make({"t"}, MonomialOrder::lex());
+  Polynomial t = one->var("t");
+  EXPECT_EQ(groebner_basis(Ideal(one, {pow(t, 4) - 1, pow(t, 6) - 1})).basis.front(), pow(t, 2) - 1);
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra
