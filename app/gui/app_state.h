@@ -15,6 +15,7 @@
 #include "app/gui/snapshot_export.h"
 #include "app/gui/thumbnails.h"
 #include "app/gui/viewport.h"
+#include "ui/polynomial_panel.h"
 #include "ui/editor.h"
 #include "ui/script.h"
 #include "ui/ui_state.h"
@@ -63,6 +64,7 @@ struct AppState {
     std::unique_ptr<GlfwContext> context;
     ui::Editor editor;
     ui::UiState ui;
+    ui::PolynomialPanelState polynomial;  // View > Polynomial
     std::unique_ptr<Viewport> viewport;
     std::unique_ptr<Thumbnails> thumbnails;
     SnapshotExport snapshot;

@@ -87,6 +87,7 @@ void menuBar(AppState& app) {
         ImGui::MenuItem("Step heat view", "H", &app.ui.stepHeat);
         ImGui::MenuItem("Statistics overlay", nullptr, &app.ui.showStats);
         ImGui::MenuItem("Node thumbnails", nullptr, &app.ui.showThumbnails);
+        ImGui::MenuItem("Polynomial (implicitize)", nullptr, &app.polynomial.open);
         ImGui::Separator();
         if (ImGui::MenuItem("Frame all", "F")) frameAll(app);
         ImGui::EndMenu();
@@ -292,6 +293,7 @@ void drawMainWindow(AppState& app) {
     ImGui::End();
     ImGui::PopStyleVar();
     statusBar(app, ImVec2(origin.x, origin.y + height), width, statusHeight);
+    ui::drawPolynomialPanel(app.editor, app.ui, app.polynomial);
     snapshotDialog(app);
     drawFileDialogs(app);
 }
