@@ -7,8 +7,6 @@
 
 namespace sdfwb::algebra::gb {
 
-using IntPoly = Poly<mpz_class>;
-
 /// p times the lcm of its coefficient denominators (integer coefficients,
 /// same terms and order). `ring` of p must be the layout's ring.
 IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* denominator = nullptr);

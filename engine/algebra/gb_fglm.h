@@ -20,8 +20,6 @@
 
 namespace sdfwb::algebra::gb {
 
-using ModPoly = Poly<std::uint32_t>;
-
 /// The multiplication matrices of Q[x]/I over Q, column by column.
 struct MultiplicationTable {
   std::size_t vars = 0;

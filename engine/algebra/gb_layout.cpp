@@ -24,7 +24,7 @@ Layout::Layout(const Ring& ring) : vars_(ring.size()) {
   // variable, bit k says "exponent > k" for k < b, so small exponents are
   // told apart. Variables beyond the 63rd get no bits.
   mask_bits_ = vars_ == 0 ? 0 : std::max<std::size_t>(1, 63 / vars_);
-  mask_vars_ = std::min<std::size_t>(vars_, 63 / mask_bits_);
+  mask_vars_ = vars_ == 0 ? 0 : std::min<std::size_t>(vars_, 63 / mask_bits_);
 }
 
 void Layout::lcm(Word* out, const Word* a, const Word* b) const {

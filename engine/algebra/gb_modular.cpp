@@ -298,9 +298,10 @@ constexpr std::size_t kMaxPrimes = 100000;
 }  // namespace
 
 std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, const RingPtr& ring,
-                                         BudgetMonitor& monitor, GroebnerStats& stats) {
+                                         BudgetMonitor& monitor, GroebnerStats& stats, const LiftTarget* target) {
   const Layout layout(*ring);
-  Lifter lifter(layout, ring);
+  const Layout target_layout(target ? *target->ring : *ring);
+  Lifter lifter(target_layout, target ? target->ring : ring);
   // The first prime runs Buchberger in full and records its useful steps;
   // later primes replay them, skipping the pairs that reduce to zero. A
   // replay that does not fit runs in full and records a new trace.
@@ -332,8 +333,11 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
       stats.replays = replays;
     }
     ++stats.primes;
+    if (target) basis = target->extract(std::move(basis), domain);
     if (const std::vector<Polynomial>* candidate = lifter.agreeing(basis, p)) {
-      if (verify(layout, *candidate, input, monitor, stats)) return *candidate;
+      const bool verified =
+          target ? target->verify(*candidate) : verify(layout, *candidate, input, monitor, stats);
+      if (verified) return *candidate;
     }
     lifter.add(basis, p);
   }

@@ -37,6 +37,9 @@ struct Poly {
   std::size_t bytes() const { return mons.capacity() * sizeof(Word) + coeffs.capacity() * sizeof(Coeff); }
 };
 
+using IntPoly = Poly<mpz_class>;       // exact work over Q
+using ModPoly = Poly<std::uint32_t>;   // work modulo a prime
+
 /// Integers standing for rationals up to a nonzero factor (Q's fraction-free
 /// arithmetic): to cancel the leading coefficient c of p with the reducer's
 /// leading coefficient a, p becomes (a/g)*p - (c/g)*m*reducer, g = gcd(a, c).

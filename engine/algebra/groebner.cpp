@@ -2,6 +2,7 @@
 
 #include "algebra/gb_convert.h"
 #include "algebra/gb_engine.h"
+#include "algebra/gb_homogenize.h"
 #include "algebra/gb_modular.h"
 
 #include <algorithm>
@@ -44,42 +45,16 @@ std::vector<Polynomial> reduce_basis(const std::vector<Polynomial>& basis, const
   return out;
 }
 
-// For orders that are not degree orders (lex, block and elimination orders),
-// Buchberger on inhomogeneous input wanders through high degrees. Instead:
-// homogenize with a new smallest variable h, compute a basis of the
-// homogeneous ideal with the order "total degree, then the given order on
-// the old variables, then h" (all homogeneous computations are graded), and
-// set h = 1: the result is a Groebner basis of the ideal in the given order
-// (Kreuzer-Robbiano, Computational Commutative Algebra 2, Prop. 4.3.18).
+// For orders that are not degree orders (lex, block and elimination
+// orders), Buchberger on inhomogeneous input wanders through high degrees;
+// the homogenized ideal is graded (see gb_homogenize.h).
 std::vector<Polynomial> homogenized_groebner(const Ideal& ideal, BudgetMonitor& monitor, GroebnerStats& stats) {
-  const Ring& ring = *ideal.ring();
-  const std::size_t n = ring.size();
-  std::vector<std::string> names = ring.variables();
-  names.push_back(internal_variable_name("h", names));
-  RingPtr homogeneous = Ring::make(
-      names, MonomialOrder::weighted(std::vector<std::int64_t>(n + 1, 1),
-                                     MonomialOrder::block({{n, ring.order()}, {1, MonomialOrder::lex()}})));
+  RingPtr homogeneous = gb::homogenized_ring(*ideal.ring());
   std::vector<Polynomial> generators;
-  for (const Polynomial& f : ideal.generators()) {
-    const std::uint64_t degree = f.total_degree();
-    std::vector<Term> terms;
-    for (const Term& t : f.terms()) {
-      std::vector<Exponent> e = t.monomial.exponents();
-      e.push_back(static_cast<Exponent>(degree - t.monomial.degree()));
-      terms.push_back(Term{Monomial(std::move(e)), t.coefficient});
-    }
-    generators.emplace_back(homogeneous, std::move(terms));
-  }
-  std::vector<Polynomial> basis = gb::modular_groebner(generators, homogeneous, monitor, stats);
+  for (const Polynomial& f : ideal.generators()) generators.push_back(gb::homogenize(f, homogeneous));
   std::vector<Polynomial> dehomogenized;
-  for (const Polynomial& g : basis) {
-    std::vector<Term> terms;
-    for (const Term& t : g.terms()) {
-      std::vector<Exponent> e = t.monomial.exponents();
-      e.pop_back();
-      terms.push_back(Term{Monomial(std::move(e)), t.coefficient});
-    }
-    dehomogenized.emplace_back(ideal.ring(), std::move(terms));
+  for (const Polynomial& g : gb::modular_groebner(generators, homogeneous, monitor, stats)) {
+    dehomogenized.push_back(gb::dehomogenize(g, ideal.ring()));
   }
   return reduce_basis(dehomogenized, ideal.ring(), monitor);
 }

@@ -1,6 +1,7 @@
 #include "algebra/implicitization.h"
 
 #include "algebra/division.h"
+#include "algebra/gb_elimination.h"
 #include "algebra/ideal_operations.h"
 #include "algebra/polynomial_gcd.h"
 
@@ -116,19 +117,41 @@ EliminationProblem implicitization_ideal(const RationalParametrization& p, Denom
 
 ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
   EliminationProblem problem = implicitization_ideal(p, options.denominator);
-  GroebnerResult basis = eliminate(problem.ideal, problem.eliminated, options.groebner);
   ImplicitizationResult result;
-  result.status = basis.status;
-  result.message = basis.message;
   result.ring = Ring::make(p.coordinates, MonomialOrder::degrevlex());
-  for (const Polynomial& g : basis.basis) result.generators.push_back(g.in_ring(result.ring).primitive());
-  result.stats = basis.stats;
-  result.seconds = basis.seconds;
+  std::vector<Polynomial> generators;
+  if (options.groebner.method == GroebnerMethod::rational) {
+    GroebnerResult basis = eliminate(problem.ideal, problem.eliminated, options.groebner);
+    result.status = basis.status;
+    result.message = basis.message;
+    result.stats = basis.stats;
+    result.seconds = basis.seconds;
+    generators = std::move(basis.basis);
+  } else {
+    // A polynomial in the coordinates lies in the elimination ideal exactly
+    // when it vanishes on the parametrization, which substitution decides
+    // cheaply: the lifted equations are verified that way.
+    BudgetMonitor monitor(options.groebner.budget);
+    auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
+    try {
+      generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
+                                           result.stats);
+    } catch (const BudgetExceeded& e) {
+      result.status = e.status;
+      result.message = e.message;
+    }
+    result.seconds = monitor.elapsed_seconds();
+  }
+  for (const Polynomial& g : generators) result.generators.push_back(g.in_ring(result.ring).primitive());
   return result;
 }
 
 Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
+  // Reduced fractions: then every denominator divides q, a unit modulo the
+  // elimination ideal, which makes "substitutes to 0" equivalent to
+  // membership in the elimination ideal (implicitize relies on it).
   Fractions f = prepare(p);
+  reduce_fractions(f);
   // x_i = n_i / d_i; with D = prod d_i and e = deg F, D^e * F(n/d) is the
   // polynomial sum over terms c * prod (n_i * D/d_i)^{a_i} * D^{e - |a|}.
   Polynomial d_all = f.ring->one();
