@@ -61,6 +61,10 @@ void to_packed(const Layout& layout, const Exponents& e, Word* out) {
 std::optional<std::size_t> staircase_size(const Layout& layout, const std::vector<const Word*>& leads) {
   std::vector<Exponents> lead_exponents;
   for (const Word* lead : leads) lead_exponents.push_back(exponents_of(layout, lead));
+  if (std::any_of(lead_exponents.begin(), lead_exponents.end(),
+                  [](const Exponents& e) { return std::all_of(e.begin(), e.end(), [](Word x) { return x == 0; }); })) {
+    return 0;  // the unit ideal: the quotient is 0
+  }
   for (std::size_t v = 0; v < layout.vars(); ++v) {
     bool pure = false;
     for (const Exponents& e : lead_exponents) {

@@ -344,6 +344,23 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
   throw std::logic_error("modular Groebner basis: no verified result after many primes");
 }
 
+bool zero_dimensional_modulo_a_prime(const std::vector<Polynomial>& input, const RingPtr& ring,
+                                     BudgetMonitor& monitor) {
+  const Layout layout(*ring);
+  for (std::uint32_t p = previous_prime(0x80000000u);; p = previous_prime(p)) {
+    const ModularDomain domain{p};
+    std::vector<ModPoly> reduced(input.size());
+    bool usable = true;
+    for (std::size_t i = 0; i < input.size() && usable; ++i) usable = to_modular(input[i], layout, domain, reduced[i]);
+    if (!usable) continue;
+    Engine<ModularDomain> engine(layout, domain, monitor);
+    std::vector<ModPoly> basis = engine.groebner(std::move(reduced));
+    std::vector<const Word*> leads;
+    for (const ModPoly& g : basis) leads.push_back(g.mons.data());
+    return !basis.empty() && staircase_size(layout, leads).has_value();
+  }
+}
+
 std::optional<std::vector<Polynomial>> modular_fglm(const std::vector<Polynomial>& basis, const RingPtr& target,
                                                     BudgetMonitor& monitor, GroebnerStats& stats) {
   if (basis.empty()) return std::nullopt;  // the zero ideal is not zero-dimensional

@@ -74,10 +74,12 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
         RingPtr degrevlex = ring->with_order(MonomialOrder::degrevlex());
         std::vector<Polynomial> generators;
         for (const Polynomial& g : ideal.generators()) generators.push_back(g.in_ring(degrevlex));
-        std::vector<Polynomial> first = gb::modular_groebner(generators, degrevlex, monitor, result.stats);
-        if (auto converted = gb::modular_fglm(first, ring, monitor, result.stats)) {
-          result.basis = std::move(*converted);
-          result.method = "modular+fglm";
+        if (gb::zero_dimensional_modulo_a_prime(generators, degrevlex, monitor)) {
+          std::vector<Polynomial> first = gb::modular_groebner(generators, degrevlex, monitor, result.stats);
+          if (auto converted = gb::modular_fglm(first, ring, monitor, result.stats)) {
+            result.basis = std::move(*converted);
+            result.method = "modular+fglm";
+          }
         }
       }
       if (result.method == "modular" && options.method == GroebnerMethod::automatic && !is_degree_order(*ring)) {

@@ -86,3 +86,24 @@ TEST(Groebner, ChangeOrder) {
 
 }  // namespace
 }  // namespace sdfwb::algebra
+
+namespace sdfwb::algebra {
+namespace {
+
+TEST(Groebner, LexOfUnitAndPositiveDimensionalIdeals) {
+  auto r = Ring::make({"x", "y", "z"}, MonomialOrder::lex());
+  Polynomial x = r->var("x"), y = r->var("y"), z = r->var("z");
+  GroebnerResult unit = groebner_basis(Ideal(r, {x * y - 1, x}));
+  ASSERT_TRUE(unit.ok());
+  EXPECT_EQ(unit.basis, std::vector<Polynomial>{r->one()});
+  // A curve: not zero-dimensional, so lex goes through homogenization.
+  GroebnerResult curve = groebner_basis(Ideal(r, {x - pow(z, 2), y - pow(z, 3)}));
+  ASSERT_TRUE(curve.ok());
+  EXPECT_EQ(curve.method, "modular+homogenized");
+  GroebnerOptions rational;
+  rational.method = GroebnerMethod::rational;
+  EXPECT_EQ(curve.basis, groebner_basis(Ideal(r, {x - pow(z, 2), y - pow(z, 3)}), rational).basis);
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra
