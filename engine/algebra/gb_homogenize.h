@@ -4,7 +4,7 @@
 // For an order > on the old variables, a Groebner basis of the homogenized
 // ideal for the order "total degree, then > on the old variables, then h"
 // becomes a Groebner basis of the ideal for > when h is set to 1
-// (Kreuzer-Robbiano, Computational Commutative Algebra 2, Prop. 4.3.18).
+// (Kreuzer and Robbiano, Computational Commutative Algebra 2, section 4.3).
 // Homogeneous computations are graded, which keeps Buchberger from
 // wandering through high degrees under orders that are not degree orders.
 

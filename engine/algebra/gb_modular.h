@@ -4,7 +4,9 @@
 // Steidel 2011), which avoids the coefficient swell of intermediate
 // polynomials over Q:
 //
-//  1. compute the reduced basis modulo several 31-bit primes;
+//  1. compute the reduced basis modulo several 31-bit primes (the first in
+//     full, recording a trace of its useful steps; the others by replaying
+//     that trace, see Trace in gb_engine.h);
 //  2. group the primes by the leading monomials of their bases and keep the
 //     majority (the others are unlucky);
 //  3. combine coefficients by Chinese remaindering and recover rationals by
@@ -14,14 +16,14 @@
 //     and every S-pair of the candidate reduces to 0 (it is a Groebner
 //     basis). Failing candidates just take more primes.
 //
-// Step 4 proves <G> contains the ideal and that G is a Groebner basis; that
-// <G> is not larger rests on the primes being lucky, which all but finitely
-// many primes are (Arnold, Theorem 5.12); a wrong answer needs a majority of
+// Step 4 proves that <G> contains the ideal and that G is a Groebner basis;
+// that <G> is not larger rests on the primes being lucky, which all but
+// finitely many primes are (Arnold 2003); a wrong answer needs a majority of
 // the primes used to be unlucky in the same way.
 
 #include "algebra/budget.h"
-#include "algebra/gb_poly.h"
 #include "algebra/gb_layout.h"
+#include "algebra/gb_poly.h"
 #include "algebra/groebner_stats.h"
 #include "algebra/polynomial.h"
 
