@@ -108,6 +108,7 @@ void BudgetMonitor::check(const Progress& state, std::size_t own_bytes) {
     Progress report = state;
     report.elapsed_seconds = elapsed;
     report.memory_bytes = memory;
+    report.primes = primes_;
     budget_.on_progress(report);
     next_report_ = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                              std::chrono::duration<double>(budget_.progress_interval_seconds));

@@ -38,7 +38,8 @@ struct Progress {
   std::size_t basis_size = 0;   // current (not yet reduced) basis elements
   std::size_t pairs_left = 0;   // critical pairs still to treat
   std::size_t memory_bytes = 0; // counted memory (see the file comment)
-  const char* stage = "";       // "buchberger", "fglm", "interreduce", ... (static text)
+  const char* stage = "";       // "buchberger", "replay", "verification", "fglm", ... (static text)
+  std::size_t primes = 0;       // modular method: primes finished so far (the counts above are per prime)
 };
 
 struct Budget {
@@ -83,6 +84,8 @@ class BudgetMonitor {
     if ((++ticks_ & 63u) == 0) check(state, own_bytes);
   }
   double elapsed_seconds() const;
+  /// Primes finished by the modular method, reported with the progress.
+  void set_primes(std::size_t primes) { primes_ = primes; }
 
  private:
   const Budget& budget_;
@@ -90,6 +93,7 @@ class BudgetMonitor {
   std::chrono::steady_clock::time_point next_report_;
   std::int64_t gmp_bytes_at_start_;
   std::uint32_t ticks_ = 0;
+  std::size_t primes_ = 0;
 };
 
 }  // namespace sdfwb::algebra

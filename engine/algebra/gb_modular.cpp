@@ -333,6 +333,7 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
       stats.replays = replays;
     }
     ++stats.primes;
+    monitor.set_primes(stats.primes);
     if (target) basis = target->extract(std::move(basis), domain);
     if (const std::vector<Polynomial>* candidate = lifter.agreeing(basis, p)) {
       const bool verified =
@@ -397,6 +398,7 @@ std::optional<std::vector<Polynomial>> modular_fglm(const std::vector<Polynomial
     if (!modular) continue;
     const std::vector<ModPoly>& converted = *modular;
     ++stats.primes;
+    monitor.set_primes(stats.primes);
     if (const std::vector<Polynomial>* candidate = lifter.agreeing(converted, p)) {
       if (verified(*candidate)) return *candidate;
     }
