@@ -147,18 +147,19 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
 }
 
 Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
-  // Reduced fractions: then every denominator divides q, a unit modulo the
-  // elimination ideal, which makes "substitutes to 0" equivalent to
+  // Reduced fractions: then every denominator divides the q of Theorem 1.8,
+  // a unit modulo the ideal, which makes "substitutes to 0" equivalent to
   // membership in the elimination ideal (implicitize relies on it).
   Fractions f = prepare(p);
   reduce_fractions(f);
-  // x_i = n_i / d_i; with D = prod d_i and e = deg F, D^e * F(n/d) is the
-  // polynomial sum over terms c * prod (n_i * D/d_i)^{a_i} * D^{e - |a|}.
-  Polynomial d_all = f.ring->one();
-  for (const Polynomial& den : f.denominators) d_all *= den;
-  std::vector<Polynomial> scaled;  // n_i * D / d_i
+  // x_i = n_i / d_i = (n_i * q/d_i) / q with q = lcm d_i; with e = deg F,
+  // q^e * F(x) is the polynomial sum over the terms c * x^a of
+  // c * prod (n_i * q/d_i)^{a_i} * q^{e - |a|}.
+  Polynomial q = f.ring->one();
+  for (const Polynomial& den : f.denominators) q = lcm(q, den);
+  std::vector<Polynomial> scaled;  // n_i * q / d_i
   for (std::size_t i = 0; i < f.numerators.size(); ++i) {
-    scaled.push_back(f.numerators[i] * *divide_exact(d_all, f.denominators[i]));
+    scaled.push_back(f.numerators[i] * *divide_exact(q, f.denominators[i]));
   }
   const Ring& source = *implicit.ring();
   std::vector<std::size_t> coordinate_of(source.size());
@@ -173,14 +174,23 @@ Polynomial substitute_parametrization(const Polynomial& implicit, const Rational
       coordinate_of[v] = static_cast<std::size_t>(it - p.coordinates.begin());
     }
   }
-  const auto degree = static_cast<unsigned>(implicit.total_degree());
+  // Powers computed once: powers[i][k] = scaled[i]^k, the last list for q.
+  std::vector<std::vector<Polynomial>> powers(scaled.size() + 1);
+  auto power = [&](std::size_t i, std::size_t k) -> const Polynomial& {
+    std::vector<Polynomial>& list = powers[i];
+    const Polynomial& base = i < scaled.size() ? scaled[i] : q;
+    if (list.empty()) list.push_back(f.ring->one());
+    while (list.size() <= k) list.push_back(list.back() * base);
+    return list[k];
+  };
+  const std::uint64_t degree = implicit.total_degree();
   Polynomial sum = f.ring->zero();
   for (const Term& t : implicit.terms()) {
     Polynomial product = f.ring->constant(t.coefficient);
     for (std::size_t v = 0; v < source.size(); ++v) {
-      if (t.monomial[v] != 0) product *= pow(scaled[coordinate_of[v]], t.monomial[v]);
+      if (t.monomial[v] != 0) product *= power(coordinate_of[v], t.monomial[v]);
     }
-    product *= pow(d_all, degree - static_cast<unsigned>(t.monomial.degree()));
+    product *= power(scaled.size(), degree - t.monomial.degree());
     sum += product;
   }
   if (f.relations.empty()) return sum;
