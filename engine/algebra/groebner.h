@@ -44,7 +44,8 @@ struct GroebnerResult {
   std::vector<Polynomial> basis;   // empty unless completed
   GroebnerStats stats;
   double seconds = 0;              // the computation's own wall-clock time
-  std::string method;              // what ran: "modular", "modular+fglm", "modular+homogenized", "rational"
+  std::string method;              // what ran: "modular", "modular+fglm", "modular+homogenized",
+                                   // "modular+elimination" (eliminate), "rational"
 
   bool ok() const { return status == Status::completed; }
 };
