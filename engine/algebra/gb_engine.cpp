@@ -396,13 +396,7 @@ std::vector<typename Engine<D>::P> Engine<D>::reduce_basis(std::vector<P> basis)
     if (!redundant) minimal.push_back(i);
   }
   reducers_ = std::move(minimal);
-  interreduce();
-  std::vector<P> result;
-  for (std::uint32_t r : reducers_) result.push_back(std::move(basis_[r].poly));
-  std::sort(result.begin(), result.end(), [&](const P& a, const P& b) {
-    return layout_.compare(a.mons.data(), b.mons.data()) < 0;
-  });
-  return result;
+  return finish();
 }
 
 template <class D>
