@@ -84,6 +84,32 @@ void reduce_fractions(Fractions& f) {
   }
 }
 
+constexpr EliminationOrderName kEliminationOrders[] = {
+    {EliminationOrder::block_degrevlex, "elimination",
+     "parameters > x, y, z; each block by degrevlex (fastest)"},
+    {EliminationOrder::block_deglex, "elimination-deglex", "parameters (degrevlex) > x, y, z by deglex"},
+    {EliminationOrder::block_lex, "elimination-lex", "parameters (degrevlex) > x, y, z by lex"},
+    {EliminationOrder::lex, "lex", "lex over parameters > x > y > z (the textbook's; slowest)"},
+};
+
+// The lex basis of the whole ideal, of which the elements free of the
+// eliminated variables are the lex basis of the elimination ideal.
+GroebnerResult lex_elimination(const EliminationProblem& problem, const RingPtr& coordinates,
+                               const GroebnerOptions& options) {
+  RingPtr lex = Ring::make(problem.ideal.ring()->variables(), MonomialOrder::lex());
+  std::vector<Polynomial> generators;
+  for (const Polynomial& g : problem.ideal.generators()) generators.push_back(g.in_ring(lex));
+  GroebnerResult result = groebner_basis(Ideal(lex, generators), options);
+  std::vector<Polynomial> kept;
+  for (const Polynomial& g : result.basis) {
+    bool free = true;
+    for (std::size_t v = 0; v < problem.eliminated.size(); ++v) free = free && !g.contains_variable(v);
+    if (free) kept.push_back(g.in_ring(coordinates));
+  }
+  result.basis = std::move(kept);
+  return result;
+}
+
 }  // namespace
 
 EliminationProblem implicitization_ideal(const RationalParametrization& p, DenominatorStrategy denominator) {
@@ -115,13 +141,34 @@ EliminationProblem implicitization_ideal(const RationalParametrization& p, Denom
   return EliminationProblem{Ideal(ring, generators), eliminated};
 }
 
+std::span<const EliminationOrderName> elimination_orders() { return kEliminationOrders; }
+
+std::optional<EliminationOrder> elimination_order_from_name(std::string_view name) {
+  for (const EliminationOrderName& entry : kEliminationOrders) {
+    if (entry.name == name) return entry.order;
+  }
+  return std::nullopt;
+}
+
+MonomialOrder coordinate_order(EliminationOrder order) {
+  switch (order) {
+    case EliminationOrder::block_degrevlex: return MonomialOrder::degrevlex();
+    case EliminationOrder::block_deglex: return MonomialOrder::deglex();
+    case EliminationOrder::block_lex:
+    case EliminationOrder::lex: return MonomialOrder::lex();
+  }
+  throw std::invalid_argument("coordinate_order: unknown elimination order");
+}
+
 ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
   EliminationProblem problem = implicitization_ideal(p, options.denominator);
   ImplicitizationResult result;
-  result.ring = Ring::make(p.coordinates, MonomialOrder::degrevlex());
+  result.ring = Ring::make(p.coordinates, coordinate_order(options.order));
   std::vector<Polynomial> generators;
-  if (options.groebner.method == GroebnerMethod::rational) {
-    GroebnerResult basis = eliminate(problem.ideal, problem.eliminated, options.groebner);
+  if (options.order == EliminationOrder::lex || options.groebner.method == GroebnerMethod::rational) {
+    GroebnerResult basis = options.order == EliminationOrder::lex
+                               ? lex_elimination(problem, result.ring, options.groebner)
+                               : eliminate(problem.ideal, problem.eliminated, options.groebner, result.ring->order());
     result.status = basis.status;
     result.message = basis.message;
     result.stats = basis.stats;
@@ -142,7 +189,14 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
     }
     result.seconds = monitor.elapsed_seconds();
   }
-  for (const Polynomial& g : generators) result.generators.push_back(g.in_ring(result.ring).primitive());
+  if (generators.size() == 1) {
+    // One equation is the same under every order, so it is normalized and
+    // printed under one: degrevlex.
+    result.ring = Ring::make(p.coordinates, MonomialOrder::degrevlex());
+    result.generators.push_back(generators.front().in_ring(result.ring).primitive());
+  } else {
+    for (const Polynomial& g : generators) result.generators.push_back(g.in_ring(result.ring).primitive());
+  }
   return result;
 }
 

@@ -14,7 +14,10 @@
 
 #include "algebra/groebner.h"
 
+#include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sdfwb::algebra {
@@ -40,20 +43,52 @@ enum class DenominatorStrategy {
   product,  // q = product of the denominators as given (for comparison only)
 };
 
+/// The monomial order of the elimination. Each is an elimination order (a
+/// monomial with a parameter is larger than any monomial in the coordinates
+/// alone), so each gives the same elimination ideal; the order on the
+/// coordinates decides which reduced basis describes it when it needs several
+/// generators (a curve), and the computation differs.
+enum class EliminationOrder {
+  /// Parameters in a degrevlex block above the coordinates, ordered by
+  /// degrevlex: the fastest (the default).
+  block_degrevlex,
+  block_deglex,  // the coordinates by deglex
+  block_lex,     // the coordinates by lex
+  /// Pure lex over the parameters, then the coordinates: Theorem 1.7 as the
+  /// textbook states it. The whole ideal's lex basis is computed, so this is
+  /// the slowest; its result equals block_lex's.
+  lex,
+};
+
+struct EliminationOrderName {
+  EliminationOrder order;
+  std::string_view name;         // what --order takes: "elimination", "lex", ...
+  std::string_view description;  // one line for menus and --help
+};
+/// Every choice, the default first.
+std::span<const EliminationOrderName> elimination_orders();
+std::optional<EliminationOrder> elimination_order_from_name(std::string_view name);
+/// The order of the coordinates under `order` (degrevlex, deglex or lex).
+MonomialOrder coordinate_order(EliminationOrder order);
+
 struct ImplicitizationOptions {
   GroebnerOptions groebner;  // budget and method
   DenominatorStrategy denominator = DenominatorStrategy::lcm;
+  EliminationOrder order = EliminationOrder::block_degrevlex;
 };
 
 struct ImplicitizationResult {
   Status status = Status::completed;
   std::string message;  // empty when completed, else "gave up after ..."
-  /// The ring of the coordinates, ordered degrevlex with coordinates[0] largest.
+  /// The ring of the coordinates, coordinates[0] largest, ordered by
+  /// coordinate_order(options.order); degrevlex when there is exactly one
+  /// generator (which every order gives, up to a factor).
   RingPtr ring;
-  /// Reduced Groebner basis of the elimination ideal, each generator scaled
-  /// to a primitive integer polynomial with positive leading coefficient.
-  /// Exactly one generator: the implicit equation. Several: the variety is
-  /// cut out by all of them (e.g. a space curve). None: the image is dense.
+  /// Reduced Groebner basis of the elimination ideal in `ring`, each
+  /// generator scaled to a primitive integer polynomial with positive leading
+  /// coefficient. Exactly one generator: the implicit equation. Several: the
+  /// variety is cut out by all of them (e.g. a space curve). None: the image
+  /// is dense.
   std::vector<Polynomial> generators;
   GroebnerStats stats;
   double seconds = 0;

@@ -142,8 +142,72 @@ TEST(Implicitization, ClassicSurfacesVanishOnTheirParametrizations) {
     EXPECT_TRUE(substitute_parametrization(f, example.parametrization).is_zero()) << f;
     const std::string surface = example.name.substr(0, example.name.find('/'));
     auto [it, inserted] = by_surface.emplace(surface, f);
-    if (!inserted) EXPECT_EQ(it->second, f);
+    if (!inserted) {
+      EXPECT_EQ(it->second, f);
+    }
   }
+}
+
+}  // namespace
+}  // namespace sdfwb::algebra
+
+namespace sdfwb::algebra {
+namespace {
+
+RationalParametrization twisted_cubic() {
+  auto t = Ring::make({"t"});
+  Polynomial tv = t->var("t");
+  return {{"t"}, {"x", "y", "z"}, {tv, pow(tv, 2), pow(tv, 3)}, {}, {}};
+}
+
+std::vector<std::string> twisted_cubic_basis(EliminationOrder order, GroebnerMethod method) {
+  ImplicitizationOptions options;
+  options.order = order;
+  options.groebner.method = method;
+  ImplicitizationResult r = implicitize(twisted_cubic(), options);
+  EXPECT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(r.ring->order(), coordinate_order(order));
+  std::vector<Polynomial> monic;
+  for (const Polynomial& g : r.generators) monic.push_back(g.monic());
+  EXPECT_TRUE(is_reduced_groebner_basis(monic));
+  return strings(r.generators);
+}
+
+TEST(ImplicitizationOrder, EveryOrderGivesTheReducedBasisOfItsCoordinateOrder) {
+  for (GroebnerMethod method : {GroebnerMethod::automatic, GroebnerMethod::rational}) {
+    SCOPED_TRACE(method == GroebnerMethod::rational ? "rational" : "automatic");
+    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::block_degrevlex, method),
+              (std::vector<std::string>{"y^2 - x*z", "x*y - z", "x^2 - y"}));
+    const std::vector<std::string> lex{"y^3 - z^2", "x*z - y^2", "x*y - z", "x^2 - y"};
+    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::block_lex, method), lex);
+    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::lex, method), lex);
+    // deglex ranks x*z above y^2, which leaves y^3 - z^2 outside the ideal
+    // of the quadrics' leading monomials
+    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::block_deglex, method),
+              (std::vector<std::string>{"x*z - y^2", "x*y - z", "x^2 - y", "y^3 - z^2"}));
+  }
+}
+
+TEST(ImplicitizationOrder, OneEquationIsTheSameUnderEveryOrder) {
+  auto ring = Ring::make({"u", "v"});
+  Polynomial u = ring->var("u"), v = ring->var("v");
+  RationalParametrization whitney{{"u", "v"}, {"x", "y", "z"}, {u * v, v, pow(u, 2)}, {}, {}};
+  for (const EliminationOrderName& entry : elimination_orders()) {
+    SCOPED_TRACE(entry.name);
+    ImplicitizationOptions options;
+    options.order = entry.order;
+    ImplicitizationResult r = implicitize(whitney, options);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(strings(r.generators), (std::vector<std::string>{"y^2*z - x^2"}));
+  }
+}
+
+TEST(ImplicitizationOrder, NamesReadBack) {
+  EXPECT_EQ(elimination_orders().front().order, ImplicitizationOptions{}.order);
+  for (const EliminationOrderName& entry : elimination_orders()) {
+    EXPECT_EQ(elimination_order_from_name(entry.name), entry.order);
+  }
+  EXPECT_FALSE(elimination_order_from_name("degrevlex"));
 }
 
 }  // namespace
