@@ -68,6 +68,13 @@ CLI::App* addImplicitizeCommand(CLI::App& app, ImplicitizeArguments& a) {
     command->add_option("--trig", a.trig, "Trigonometric conversion: half-angle substitution or cos-sin variables")
         ->check(CLI::IsMember({"half-angle", "cos-sin"}))
         ->capture_default_str();
+    std::vector<std::string> orders;
+    std::string orderHelp = "Monomial order of the elimination:";
+    for (const algebra::EliminationOrderName& entry : algebra::elimination_orders()) {
+        orders.emplace_back(entry.name);
+        orderHelp += "\n  " + std::string(entry.name) + ": " + std::string(entry.description);
+    }
+    command->add_option("--order", a.order, orderHelp)->check(CLI::IsMember(orders))->capture_default_str();
     command->add_option("--timeout", a.timeout, "Give up after this many seconds")->capture_default_str();
     return command;
 }
@@ -91,22 +98,17 @@ int runImplicitize(const ImplicitizeArguments& a) {
         expr::TrigConversion conversion = expr::parseParametrization(a.equations, strategy);
         algebra::ImplicitizationOptions options;
         options.groebner.budget = budget(a.timeout);
+        options.order = *algebra::elimination_order_from_name(a.order);
         algebra::ImplicitizationResult result = algebra::implicitize(conversion.parametrization, options);
         if (!result.ok()) {
             std::cerr << "sdf-workbench implicitize: " << result.message << "\n";
             return 3;
         }
-        std::uint64_t degree = 0;
-        size_t terms = 0;
-        nlohmann::ordered_json generators = nlohmann::ordered_json::array();
-        for (const algebra::Polynomial& g : result.generators) {
-            degree = std::max(degree, g.total_degree());
-            terms += g.term_count();
-            generators.push_back(g.to_string());
-        }
         if (a.json) {
-            nlohmann::ordered_json out = {{"generators", generators}, {"degree", degree}, {"terms", terms},
-                                          {"seconds", result.seconds}};
+            nlohmann::ordered_json generators = nlohmann::ordered_json::array();
+            for (const algebra::Polynomial& g : result.generators) generators.push_back(g.to_string());
+            nlohmann::ordered_json out = {{"generators", generators}, {"degree", result.degree()},
+                                          {"terms", result.term_count()}, {"seconds", result.seconds}};
             std::cout << out.dump() << "\n";
             return 0;
         }
@@ -117,7 +119,8 @@ int runImplicitize(const ImplicitizeArguments& a) {
                       << " generators; the variety is where all vanish:\n";
             for (const algebra::Polynomial& g : result.generators) std::cout << g.to_string() << " = 0\n";
         }
-        std::cout << "degree " << degree << ", " << terms << " terms, " << result.seconds << " s\n";
+        std::cout << "degree " << result.degree() << ", " << result.term_count() << " terms, " << result.seconds
+                  << " s\n";
         return 0;
     });
 }

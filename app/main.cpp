@@ -46,7 +46,15 @@ int main(int argc, char** argv) {
     CLI::App* implicitize = sdfwb::app::addImplicitizeCommand(app, implicitizeArguments);
     sdfwb::app::GroebnerArguments groebnerArguments;
     CLI::App* groebner = sdfwb::app::addGroebnerCommand(app, groebnerArguments);
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // --help and --version are "errors" with exit code 0
+        if (error.get_exit_code() == 0) return app.exit(error);
+        // one line, and the exit code of every other bad input
+        std::cerr << "sdf-workbench: " << error.what() << " (see --help)\n";
+        return 2;
+    }
     if (implicitize->parsed()) {
         return sdfwb::app::runImplicitize(implicitizeArguments);
     }

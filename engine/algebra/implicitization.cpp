@@ -160,6 +160,18 @@ MonomialOrder coordinate_order(EliminationOrder order) {
   throw std::invalid_argument("coordinate_order: unknown elimination order");
 }
 
+std::uint64_t ImplicitizationResult::degree() const {
+  std::uint64_t degree = 0;
+  for (const Polynomial& g : generators) degree = std::max(degree, g.total_degree());
+  return degree;
+}
+
+std::size_t ImplicitizationResult::term_count() const {
+  std::size_t terms = 0;
+  for (const Polynomial& g : generators) terms += g.term_count();
+  return terms;
+}
+
 ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
   EliminationProblem problem = implicitization_ideal(p, options.denominator);
   ImplicitizationResult result;

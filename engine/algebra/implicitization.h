@@ -14,6 +14,7 @@
 
 #include "algebra/groebner.h"
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -94,6 +95,10 @@ struct ImplicitizationResult {
   double seconds = 0;
 
   bool ok() const { return status == Status::completed; }
+  /// The largest total degree among the generators.
+  std::uint64_t degree() const;
+  /// The number of terms, summed over the generators.
+  std::size_t term_count() const;
 };
 
 /// The ideal whose elimination gives the implicit equations, and the

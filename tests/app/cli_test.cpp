@@ -154,6 +154,22 @@ TEST_F(Cli, ImplicitizeConvertsTrigonometryExactly) {
         << torus.output;
 }
 
+TEST_F(Cli, ImplicitizeTakesTheEliminationOrder) {
+    // A curve needs several generators, and which ones depends on the order.
+    ProcessResult lex = run("implicitize \"x = t; y = t^2; z = t^3\" --order lex --json");
+    ASSERT_EQ(lex.exitCode, 0) << lex.output;
+    EXPECT_EQ(lex.output.find("{\"generators\":[\"y^3 - z^2\",\"x*z - y^2\",\"x*y - z\",\"x^2 - y\"],"), 0u)
+        << lex.output;
+    ProcessResult fallback = run("implicitize \"x = t; y = t^2; z = t^3\" --json");
+    EXPECT_EQ(fallback.output.find("{\"generators\":[\"y^2 - x*z\",\"x*y - z\",\"x^2 - y\"],"), 0u)
+        << fallback.output;
+    ProcessResult unknown = run("implicitize \"x = t; y = t^2; z = t^3\" --order revlex");
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_EQ(unknown.output,
+              "sdf-workbench: --order: revlex not in {elimination,elimination-deglex,elimination-lex,lex} "
+              "(see --help)\n");
+}
+
 TEST_F(Cli, GroebnerPrintsAReducedBasisInInputSyntax) {
     ProcessResult r = run("groebner \"x^2 + y^2 + z^2 - 1; x - y; y - z^2\" --vars x,y,z --order degrevlex --json");
     ASSERT_EQ(r.exitCode, 0) << r.output;
