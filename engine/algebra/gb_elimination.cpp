@@ -55,7 +55,14 @@ std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vecto
     return engine.reduce_basis(std::move(part));
   };
   target.verify = [&](const std::vector<Polynomial>& candidate) {
+    Progress progress;
+    progress.stage = "verification";
+    progress.basis_size = candidate.size();
     for (const Polynomial& f : candidate) {
+      // A membership test can take long (a substitution, or a basis of the
+      // whole ideal) and need not check the budget itself: none starts once
+      // the budget is spent.
+      monitor.check(progress);
       if (!contains(f)) return false;
     }
     const IntegerDomain integers;

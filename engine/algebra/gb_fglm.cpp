@@ -171,6 +171,8 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
   one.entries[0] = 1;
   cache.emplace(Exponents(vars, 0), std::move(one));
   std::size_t bytes = 0;
+  Progress progress;
+  progress.stage = "fglm verification";
   // NF(m) = M_v * NF(m / x_v) for the last variable v of m, so that powers
   // of one variable share their chain of parents.
   std::function<const ExactVector&(const Exponents&)> normal_form = [&](const Exponents& m) -> const ExactVector& {
@@ -197,8 +199,6 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
     out.denominator = parent.denominator * scale[v];
     remove_content(out);
     for (const mpz_class& e : out.entries) bytes += mpz_size(e.get_mpz_t()) * sizeof(mp_limb_t);
-    Progress progress;
-    progress.stage = "fglm verification";
     monitor.check(progress, bytes);
     return cache.emplace(m, std::move(out)).first->second;
   };
@@ -222,6 +222,9 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
           mpz_addmul(sum[r].get_mpz_t(), factor.get_mpz_t(), forms[t]->entries[r].get_mpz_t());
         }
       }
+      // dim products of big integers per term, with no check above when the
+      // term's normal form was cached.
+      monitor.tick(progress, bytes);
     }
     for (const mpz_class& x : sum) {
       if (sgn(x) != 0) return false;
@@ -243,12 +246,17 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
     return std::vector<ModPoly>{one};
   }
 
-  // The table modulo p.
+  // The table modulo p: a pass over every exact numerator, repeated for
+  // each prime, so it checks the budget too.
   struct Entry {
     std::uint32_t row, value;
   };
+  const std::size_t matrix_bytes = vars * dim * sizeof(Entry);
+  Progress progress;
+  progress.stage = "fglm";
   std::vector<std::vector<Entry>> matrix(table.columns.size());
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    monitor.tick(progress, matrix_bytes);
     const MultiplicationTable::Column& column = table.columns[c];
     const auto den = static_cast<std::uint32_t>(mpz_fdiv_ui(column.denominator.get_mpz_t(), p));
     if (den == 0) return std::nullopt;
@@ -259,7 +267,6 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
       if (value != 0) matrix[c].push_back({column.rows[k], value});
     }
   }
-  const std::size_t matrix_bytes = vars * dim * sizeof(Entry);
 
   // Walk the monomials in increasing target order.
   struct Row {
@@ -293,8 +300,6 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
     candidates.erase(candidates.begin());
     const Exponents m(target.exponents(m_packed.data()), target.exponents(m_packed.data()) + vars);
     if (divisible_by_any(m, new_leads)) continue;
-    Progress progress;
-    progress.stage = "fglm";
     progress.basis_size = result.size();
     progress.pairs_left = candidates.size();
     monitor.tick(progress, matrix_bytes + rows.size() * 2 * dim * sizeof(std::uint32_t));

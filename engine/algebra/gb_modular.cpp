@@ -36,6 +36,17 @@ bool to_modular(const Polynomial& f, const Layout& layout, const ModularDomain& 
   return true;
 }
 
+// The state the lifting stage reports to the budget. The lift can run long
+// (its coefficients grow with every prime), so it checks the budget at the
+// same kind of safe points as Buchberger; its coefficients are GMP integers,
+// which the monitor counts by itself.
+Progress lifting(std::size_t polys) {
+  Progress progress;
+  progress.stage = "lifting";
+  progress.basis_size = polys;
+  return progress;
+}
+
 // Bases modulo the primes that share one set of leading monomials, combined
 // by Chinese remaindering: residues modulo the product of those primes.
 struct Group {
@@ -47,7 +58,7 @@ struct Group {
 
 // acc (mod M) and next (mod p) -> residues mod M*p over the union of supports.
 IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& modulus, const ModPoly& next,
-                          std::uint32_t p) {
+                          std::uint32_t p, BudgetMonitor& monitor, const Progress& progress) {
   const std::size_t stride = layout.stride();
   const ModularDomain domain{p};
   const std::uint32_t m_inverse = domain.inverse(mod_p(modulus, p));
@@ -60,6 +71,7 @@ IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& m
     domain.mul(t, diff, m_inverse);
     mpz_addmul_ui(r.get_mpz_t(), modulus.get_mpz_t(), t);
     out.push(mon, stride, std::move(r));
+    monitor.tick(progress);
   };
   std::size_t x = 0, y = 0;
   while (x < acc.size() || y < next.size()) {
@@ -79,7 +91,8 @@ IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& m
   return out;
 }
 
-void accumulate(const Layout& layout, Group& group, const std::vector<ModPoly>& basis, std::uint32_t p) {
+void accumulate(const Layout& layout, Group& group, const std::vector<ModPoly>& basis, std::uint32_t p,
+                BudgetMonitor& monitor) {
   if (group.primes == 0) {
     for (const ModPoly& g : basis) {
       IntPoly lifted;
@@ -88,8 +101,9 @@ void accumulate(const Layout& layout, Group& group, const std::vector<ModPoly>& 
       group.polys.push_back(std::move(lifted));
     }
   } else {
+    const Progress progress = lifting(basis.size());
     for (std::size_t i = 0; i < basis.size(); ++i) {
-      group.polys[i] = chinese_remainder(layout, group.polys[i], group.modulus, basis[i], p);
+      group.polys[i] = chinese_remainder(layout, group.polys[i], group.modulus, basis[i], p, monitor, progress);
     }
   }
   group.modulus *= p;
@@ -108,8 +122,9 @@ Monomial to_monomial(const Layout& layout, const Word* mon) {
 // time, so that while the modulus is still too small a failed attempt costs
 // one reconstruction instead of a pass over all coefficients.
 std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const Group& group, const RingPtr& ring,
-                                                   std::pair<std::size_t, std::size_t>& probe) {
+                                                   std::pair<std::size_t, std::size_t>& probe, BudgetMonitor& monitor) {
   const std::size_t stride = layout.stride();
+  const Progress progress = lifting(group.polys.size());
   mpq_class q;
   if (probe.first < group.polys.size() && probe.second < group.polys[probe.first].size() &&
       !rational_reconstruction(group.polys[probe.first].coeffs[probe.second], group.modulus, q)) {
@@ -121,6 +136,7 @@ std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const G
     std::vector<Term> terms;
     for (std::size_t t = 0; t < g.size(); ++t) {
       if (mpz_sgn(g.coeffs[t].get_mpz_t()) == 0) continue;
+      monitor.tick(progress);
       if (!rational_reconstruction(g.coeffs[t], group.modulus, q)) {
         probe = {i, t};
         return std::nullopt;
@@ -134,11 +150,15 @@ std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const G
 
 // The candidate reduced mod p equals the basis computed mod p.
 bool agrees_modulo(const Layout& layout, const std::vector<Polynomial>& candidate, const std::vector<ModPoly>& basis,
-                   std::uint32_t p) {
+                   std::uint32_t p, BudgetMonitor& monitor) {
   if (candidate.size() != basis.size()) return false;
   const ModularDomain domain{p};
+  const Progress progress = lifting(basis.size());
   ModPoly reduced;
   for (std::size_t i = 0; i < basis.size(); ++i) {
+    // Once per polynomial, as Buchberger's interreduction does: reducing a
+    // polynomial with rational coefficients costs far more than the check.
+    monitor.check(progress);
     if (!to_modular(candidate[i], layout, domain, reduced)) return false;
     if (reduced.mons != basis[i].mons || reduced.coeffs != basis[i].coeffs) return false;
   }
@@ -235,12 +255,13 @@ namespace {
 // Collects bases modulo successive primes and proposes candidates over Q.
 class Lifter {
  public:
-  Lifter(const Layout& layout, RingPtr ring) : layout_(layout), ring_(std::move(ring)) {}
+  Lifter(const Layout& layout, RingPtr ring, BudgetMonitor& monitor)
+      : layout_(layout), ring_(std::move(ring)), monitor_(monitor) {}
 
   /// The current candidate, if it reduces modulo p to `basis`.
   const std::vector<Polynomial>* agreeing(const std::vector<ModPoly>& basis, std::uint32_t p) const {
     if (!candidate_ || candidate_group_ != group_of(basis)) return nullptr;
-    return agrees_modulo(layout_, *candidate_, basis, p) ? &*candidate_ : nullptr;
+    return agrees_modulo(layout_, *candidate_, basis, p, monitor_) ? &*candidate_ : nullptr;
   }
 
   /// Adds a basis modulo p to its group (primes with the same leading
@@ -251,7 +272,7 @@ class Lifter {
       groups_.emplace_back();
       leads_.push_back(leads(basis));
     }
-    accumulate(layout_, groups_[index], basis, p);
+    accumulate(layout_, groups_[index], basis, p, monitor_);
     std::size_t largest = 0;
     for (std::size_t g = 1; g < groups_.size(); ++g) {
       if (groups_[g].primes > groups_[largest].primes) largest = g;
@@ -262,7 +283,7 @@ class Lifter {
       // more primes than strictly needed) rather than after every prime.
       Group& group = groups_[index];
       if (group.primes >= group.next_attempt) {
-        candidate_ = reconstruct(layout_, group, ring_, probe_);
+        candidate_ = reconstruct(layout_, group, ring_, probe_, monitor_);
         candidate_group_ = index;
         group.next_attempt = group.primes + 1 + group.primes / 8;
       }
@@ -286,6 +307,7 @@ class Lifter {
 
   const Layout& layout_;
   RingPtr ring_;
+  BudgetMonitor& monitor_;
   std::vector<Group> groups_;
   std::vector<std::vector<Word>> leads_;  // leading monomials of each group
   std::optional<std::vector<Polynomial>> candidate_;
@@ -301,7 +323,7 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
                                          BudgetMonitor& monitor, GroebnerStats& stats, const LiftTarget* target) {
   const Layout layout(*ring);
   const Layout target_layout(target ? *target->ring : *ring);
-  Lifter lifter(target_layout, target ? target->ring : ring);
+  Lifter lifter(target_layout, target ? target->ring : ring, monitor);
   // The first prime runs Buchberger in full and records its useful steps;
   // later primes replay them, skipping the pairs that reduce to zero. A
   // replay that does not fit runs in full and records a new trace.
@@ -389,7 +411,7 @@ std::optional<std::vector<Polynomial>> modular_fglm(const std::vector<Polynomial
     return all_in_ideal(*table, layout, target_packed, monitor);
   };
 
-  Lifter lifter(layout, target);
+  Lifter lifter(layout, target, monitor);
   std::uint32_t p = 0x80000000u;
   for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
     p = previous_prime(p);
