@@ -119,22 +119,26 @@ Problems Editor::insert(const NodePath& parent, int index, Node node) {
 }
 
 Problems Editor::add(NodeKind kind, const std::optional<NodePath>& under) {
-    NodePath target = under.value_or(selection_.value_or(NodePath{}));
-    const Node* node = findNode(scene_.root, target);
-    if (!node) {
-        return noNode(target);
-    }
     if (scene::kindSpec(kind).minChildren > 0) {
         // an operator that needs a child cannot stand alone: it wraps the target
-        return wrap(target, kind);
+        return wrap(under.value_or(selection_.value_or(NodePath{})), kind);
     }
-    if (takesAnotherChild(*node)) {
-        return insert(target, -1, Node::make(kind));
+    return add(Node::make(kind), under);
+}
+
+Problems Editor::add(Node node, const std::optional<NodePath>& under) {
+    NodePath target = under.value_or(selection_.value_or(NodePath{}));
+    const Node* existing = findNode(scene_.root, target);
+    if (!existing) {
+        return noNode(target);
+    }
+    if (takesAnotherChild(*existing)) {
+        return insert(target, -1, std::move(node));
     }
     if (!target.empty() && takesAnotherChild(*findNode(scene_.root, parentOf(target)))) {
-        return insert(parentOf(target), target.back() + 1, Node::make(kind));
+        return insert(parentOf(target), target.back() + 1, std::move(node));
     }
-    return insert({}, -1, Node::make(kind));
+    return insert({}, -1, std::move(node));
 }
 
 Problems Editor::wrap(const NodePath& path, NodeKind kind) {

@@ -55,9 +55,12 @@ public:
     Problems rename(const NodePath& path, std::string name);
     // Inserts `node` as child `index` of `parent` (-1: last) and selects it.
     Problems insert(const NodePath& parent, int index, scene::Node node);
-    // Where `add <kind>` puts a node: into `under` if it takes one more child,
-    // otherwise next to it in its parent; the root when nothing fits.
+    // Where `add <kind>` puts a node: into `under` (default: the selection)
+    // if it takes one more child, otherwise next to it in its parent; the root
+    // when nothing fits. An operator that needs a child wraps `under` instead.
     Problems add(scene::NodeKind kind, const std::optional<NodePath>& under);
+    // Puts `node` (which needs no child) where add() would put its kind.
+    Problems add(scene::Node node, const std::optional<NodePath>& under);
     // Replaces the node by a new `kind` node holding it; selects the new node.
     Problems wrap(const NodePath& path, scene::NodeKind kind);
     // Moves the subtree to child `index` of `newParent` (index counted in the

@@ -3,6 +3,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/panels.h"
+
 namespace sdfwb::ui {
 
 std::string tryFormulaText(Editor& editor, const NodePath& path, const scene::FieldSpec& field,
@@ -15,6 +17,26 @@ std::string tryFormulaText(Editor& editor, const NodePath& path, const scene::Fi
     std::string joined;
     for (const std::string& problem : problems) joined += (joined.empty() ? "" : "\n") + problem;
     return joined;
+}
+
+namespace {
+
+const ImU32 kErrorColour = IM_COL32(255, 110, 100, 255);
+
+void showProblem(const std::string& reason) {
+    if (reason.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+    ImGui::TextWrapped("%s", reason.c_str());
+    ImGui::PopStyleColor();
+}
+
+}  // namespace
+
+const scene::FieldSpec* formulaField(const scene::KindSpec& kind) {
+    for (const scene::FieldSpec& field : kind.fields) {
+        if (field.type == scene::FieldType::Formula) return &field;
+    }
+    return nullptr;
 }
 
 void drawFormulaField(Editor& editor, UiState& ui, const NodePath& path, const scene::FieldSpec& field,
@@ -31,10 +53,39 @@ void drawFormulaField(Editor& editor, UiState& ui, const NodePath& path, const s
     std::string reason = tryFormulaText(editor, path, field, text, key);
     // the draft's problem belongs under the box, not in the log every frame
     ui.inspectorProblems.clear();
-    if (reason.empty()) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
-    ImGui::TextWrapped("%s", reason.c_str());
-    ImGui::PopStyleColor();
+    showProblem(reason);
+}
+
+Problems addFormulaNode(Editor& editor, const scene::KindSpec& kind, const std::string& formula) {
+    const scene::FieldSpec* field = formulaField(kind);
+    if (!field) return {"a " + std::string(kind.name) + " node has no formula"};
+    if (std::string reason = scene::checkField(*field, formula); !reason.empty()) return {reason};
+    scene::Node node = scene::Node::make(kind.kind);
+    node.set(field->name, formula);
+    return editor.add(std::move(node), std::nullopt);
+}
+
+void drawAddFormulaMenu(Editor& editor, UiState& ui, const scene::KindSpec& kind) {
+    std::string name(kind.name);
+    if (!ImGui::BeginMenu(name.c_str())) return;
+    auto [draft, fresh] = ui.addFormulaDrafts.try_emplace(name);
+    if (fresh) draft->second = std::get<std::string>(formulaField(kind)->defaultValue);
+    ImGui::TextDisabled("%s", kind.name == "sdf" ? "signed distance of the point p (or x, y, z)"
+                                                 : "F(x, y, z), zero on the surface, negative inside");
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(360);
+    bool entered = ImGui::InputText("##formula", &draft->second, ImGuiInputTextFlags_EnterReturnsTrue);
+    std::string reason = scene::checkField(*formulaField(kind), draft->second);
+    showProblem(reason);
+    ImGui::BeginDisabled(!reason.empty());
+    bool pressed = ImGui::Button(("Add " + name).c_str());
+    ImGui::EndDisabled();
+    if ((pressed || entered) && reason.empty()) {
+        Problems problems = addFormulaNode(editor, kind, draft->second);
+        reportProblems(ui, problems);
+        if (problems.empty()) ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndMenu();
 }
 
 }  // namespace sdfwb::ui

@@ -1,8 +1,9 @@
 #pragma once
-// The inspector's editor for FieldType::Formula fields (sdf, implicit and
-// polynomial nodes): a multiline text box whose every change is tried on the
-// scene through the Editor, one undo step per editing session, with the
-// reason a draft is refused shown in red under the box.
+// Formula fields (sdf, implicit and polynomial nodes) as they are typed: in
+// the inspector, a multiline text box whose every change is tried on the
+// scene through the Editor, one undo step per editing session; in the Add
+// menu, a draft that becomes a new node once it is valid. Either shows the
+// reason a draft is refused in red under the box.
 
 #include <string>
 #include <string_view>
@@ -27,5 +28,18 @@ std::string tryFormulaText(Editor& editor, const NodePath& path, const scene::Fi
 // the box ends the undo merge and shows the scene's (last valid) formula again.
 void drawFormulaField(Editor& editor, UiState& ui, const NodePath& path, const scene::FieldSpec& field,
                       const std::string& value);
+
+// The kind's formula field, or nullptr for a kind without one.
+const scene::FieldSpec* formulaField(const scene::KindSpec& kind);
+
+// Adds a new `kind` node (sdf, implicit or polynomial) whose formula field is
+// `formula`, where Editor::add puts it. Refused: the scene is unchanged and
+// the problems say why, the formula's own reason first ("column 9: ...").
+Problems addFormulaNode(Editor& editor, const scene::KindSpec& kind, const std::string& formula);
+
+// The Add menu's entry for a kind with a formula field: a submenu holding a
+// text box for the formula (a draft kept in ui.addFormulaDrafts), its problem
+// in red as it is typed, and an Add button, which Enter also presses.
+void drawAddFormulaMenu(Editor& editor, UiState& ui, const scene::KindSpec& kind);
 
 }  // namespace sdfwb::ui

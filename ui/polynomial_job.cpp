@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -12,6 +14,7 @@
 #include "algebra/implicitization.h"
 #include "expr/formula.h"
 #include "expr/tape.h"
+#include "expr/trig.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -39,20 +42,17 @@ PolynomialOutcome computePolynomial(const PolynomialRequest& request, const alge
         expr::TrigConversion conversion = expr::parseParametrization(request.equations, request.trig);
         algebra::ImplicitizationOptions options;
         options.groebner.budget = budget;
+        options.order = request.order;
         algebra::ImplicitizationResult result = algebra::implicitize(conversion.parametrization, options);
         out.seconds = result.seconds;
         if (!result.ok()) {
             out.message = result.message.empty() ? algebra::to_string(result.status) : result.message;
             return out;
         }
-        for (const algebra::Polynomial& g : result.generators) {
-            out.degree = std::max(out.degree, g.total_degree());
-            out.terms += g.term_count();
-            out.generators.push_back(g.to_string());
-        }
-        if (request.parameterRange) {
-            out.bounds = sampledBounds(request.equations, request.parameterRange->first, request.parameterRange->second);
-        }
+        out.degree = result.degree();
+        out.terms = result.term_count();
+        for (const algebra::Polynomial& g : result.generators) out.generators.push_back(g.to_string());
+        if (!request.parameterRanges.empty()) out.bounds = sampledBounds(request.equations, request.parameterRanges);
         out.ok = true;
         out.message = summary(out);
     } catch (const std::exception& error) {
@@ -61,7 +61,29 @@ PolynomialOutcome computePolynomial(const PolynomialRequest& request, const alge
     return out;
 }
 
-std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view equations, double lo, double hi) {
+std::vector<ParameterRange> parameterRanges(std::string_view equations, std::span<const ParameterRange> previous) {
+    expr::ParametricEquations parsed = expr::compileParametricEquations(equations);
+    // the conversion finds the angles, and refuses what Run would refuse
+    expr::TrigConversion conversion = expr::toRationalParametrization(parsed, expr::TrigStrategy::CosSinRelation);
+    std::vector<ParameterRange> ranges;
+    for (const std::string& name : parsed.graph.variables()) {
+        bool angle = std::any_of(conversion.angles.begin(), conversion.angles.end(),
+                                 [&](const expr::AngleSubstitution& a) { return a.parameter == name; });
+        auto kept = std::find_if(previous.begin(), previous.end(),
+                                 [&](const ParameterRange& r) { return r.name == name && r.angle == angle; });
+        if (kept != previous.end()) {
+            ranges.push_back(*kept);
+        } else if (angle) {
+            ranges.push_back({name, 0, 2 * std::numbers::pi, true});
+        } else {
+            ranges.push_back({name});
+        }
+    }
+    return ranges;
+}
+
+std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view equations,
+                                                               std::span<const ParameterRange> ranges) {
     expr::ParametricEquations parsed = expr::compileParametricEquations(equations);
     std::vector<expr::NodeId> outputs;
     std::vector<int> axis;
@@ -72,6 +94,12 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view 
     expr::Tape tape(parsed.graph, outputs);
     expr::Evaluator<double> evaluate(tape);
     const std::size_t parameters = tape.variables().size();
+    std::vector<ParameterRange> box;  // in the tape's order
+    for (const std::string& name : tape.variables()) {
+        auto range = std::find_if(ranges.begin(), ranges.end(), [&](const ParameterRange& r) { return r.name == name; });
+        if (range == ranges.end()) throw std::invalid_argument("no range for the parameter '" + name + "'");
+        box.push_back(*range);
+    }
     // 33 samples per parameter for curves and surfaces, fewer beyond
     const int steps = parameters <= 2 ? 32 : 12;
     std::size_t count = 1;
@@ -82,7 +110,7 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view 
     for (std::size_t index = 0; index < count; ++index) {
         std::size_t rest = index;
         for (std::size_t i = 0; i < parameters; ++i) {
-            values[i] = lo + (hi - lo) * static_cast<double>(rest % (steps + 1)) / steps;
+            values[i] = box[i].min + (box[i].max - box[i].min) * static_cast<double>(rest % (steps + 1)) / steps;
             rest /= steps + 1;
         }
         std::span<const double> point = evaluate(values);

@@ -9,23 +9,35 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "algebra/budget.h"
+#include "algebra/implicitization.h"
 #include "expr/trig.h"
 #include "scene/scene.h"
 
 namespace sdfwb::ui {
 
+// A parameter of the equations and the interval the user gives it.
+struct ParameterRange {
+    std::string name;
+    double min = -1, max = 1;
+    bool angle = false;  // used inside sin, cos or tan
+    friend bool operator==(const ParameterRange&, const ParameterRange&) = default;
+};
+
 struct PolynomialRequest {
     std::string equations = "x = u*v; y = v; z = u^2";
     expr::TrigStrategy trig = expr::TrigStrategy::CosSinRelation;
-    // When set, every parameter runs over [first, second] and the node's
-    // bounds are the sampled image of that box; otherwise the node's defaults.
-    std::optional<std::pair<double, double>> parameterRange;
+    algebra::EliminationOrder order = algebra::EliminationOrder::block_degrevlex;
+    // When given, the node's bounds are the sampled image of this box (every
+    // parameter must be listed); when empty, the node's defaults.
+    std::vector<ParameterRange> parameterRanges;
     double timeLimitSeconds = 60;  // s
 };
 
@@ -92,9 +104,17 @@ private:
 // Runs a request on the calling thread (the worker's body).
 PolynomialOutcome computePolynomial(const PolynomialRequest& request, const algebra::Budget& budget);
 
-// The image of the parameter box [lo, hi]^n under the equations, sampled on a
-// grid and padded by 5% (at least 0.05) per axis; nullopt when no sample is finite.
-std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view equations, double lo, double hi);
+// The parameters of `equations` in order of first use, each with its range
+// from `previous` when listed there with the same role (angle or not), else
+// [0, 2π] for an angle and [-1, 1] for any other. Throws what Run would
+// report for equations that cannot be implicitized (expr::Error with a column).
+std::vector<ParameterRange> parameterRanges(std::string_view equations, std::span<const ParameterRange> previous = {});
+
+// The image of the parameter box under the equations, sampled on a grid and
+// padded by 5% (at least 0.05) per axis; nullopt when no sample is finite.
+// Throws std::invalid_argument naming a parameter missing from `ranges`.
+std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view equations,
+                                                               std::span<const ParameterRange> ranges);
 
 // A `polynomial` node named "polynomial" with the outcome's generator as its
 // formula and its bounds when sampled. Requires outcome.isSurface().

@@ -1,5 +1,9 @@
 #include "ui/polynomial_panel.h"
 
+#include <algorithm>
+#include <exception>
+#include <span>
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -10,24 +14,57 @@ namespace {
 
 const ImU32 kErrorColour = IM_COL32(255, 110, 100, 255);
 
+void showProblem(const std::string& problem) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+    ImGui::TextWrapped("%s", problem.c_str());
+    ImGui::PopStyleColor();
+}
+
+void orderCombo(algebra::EliminationOrder& order) {
+    std::span<const algebra::EliminationOrderName> orders = algebra::elimination_orders();
+    auto current = std::find_if(orders.begin(), orders.end(), [&](const auto& entry) { return entry.order == order; });
+    ImGui::SetNextItemWidth(200);
+    if (ImGui::BeginCombo("monomial order", std::string(current->name).c_str())) {
+        for (const algebra::EliminationOrderName& entry : orders) {
+            if (ImGui::Selectable(std::string(entry.name).c_str(), entry.order == order)) order = entry.order;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(entry.description).c_str());
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(current->description).c_str());
+}
+
+void rangeWidgets(PolynomialPanelState& state) {
+    ImGui::Checkbox("bounds from the parameter ranges", &state.boundsFromRanges);
+    ImGui::BeginDisabled(!state.boundsFromRanges);
+    for (ParameterRange& range : state.ranges) {
+        ImGui::SetNextItemWidth(200);
+        double bounds[2] = {range.min, range.max};
+        std::string label = range.name + " from, to";
+        if (ImGui::InputScalarN(label.c_str(), ImGuiDataType_Double, bounds, 2, nullptr, nullptr, "%.4g")) {
+            range.min = bounds[0];
+            range.max = bounds[1];
+        }
+    }
+    ImGui::EndDisabled();
+}
+
 void requestWidgets(PolynomialPanelState& state) {
     PolynomialRequest& r = state.request;
-    ImGui::TextDisabled("parametric equations (sin/cos of rational multiples of parameters are exact)");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("parametric equations, e.g. x = u*v; y = v; z = u^2 (sin and cos of rational multiples "
+                       "of parameters are converted exactly)");
+    ImGui::PopStyleColor();
     ImGui::InputTextMultiline("##equations", &r.equations, ImVec2(-1, ImGui::GetTextLineHeight() * 4 + 8));
+    readParameters(state);
+    if (!state.problem.empty()) showProblem(state.problem);
+    orderCombo(r.order);
     int trig = r.trig == expr::TrigStrategy::CosSinRelation ? 0 : 1;
     ImGui::RadioButton("cos-sin variables", &trig, 0);
     ImGui::SameLine();
     ImGui::RadioButton("half-angle", &trig, 1);
     r.trig = trig == 0 ? expr::TrigStrategy::CosSinRelation : expr::TrigStrategy::HalfAngle;
-    ImGui::Checkbox("bounds from parameter range", &state.useRange);
-    ImGui::BeginDisabled(!state.useRange);
-    ImGui::SetNextItemWidth(200);
-    double range[2] = {state.rangeMin, state.rangeMax};
-    if (ImGui::InputScalarN("every parameter in", ImGuiDataType_Double, range, 2, nullptr, nullptr, "%.3g")) {
-        state.rangeMin = range[0];
-        state.rangeMax = range[1];
-    }
-    ImGui::EndDisabled();
+    rangeWidgets(state);
     ImGui::SetNextItemWidth(200);
     ImGui::InputDouble("time limit (s)", &r.timeLimitSeconds, 0, 0, "%.0f");
     if (r.timeLimitSeconds < 0.1) r.timeLimitSeconds = 0.1;
@@ -36,9 +73,7 @@ void requestWidgets(PolynomialPanelState& state) {
 void outcomeWidgets(Editor& editor, UiState& ui, const PolynomialOutcome& outcome) {
     ImGui::Separator();
     if (!outcome.ok) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
-        ImGui::TextWrapped("%s", outcome.message.c_str());
-        ImGui::PopStyleColor();
+        showProblem(outcome.message);
         return;
     }
     ImGui::TextUnformatted(outcome.message.c_str());
@@ -53,6 +88,23 @@ void outcomeWidgets(Editor& editor, UiState& ui, const PolynomialOutcome& outcom
 
 }  // namespace
 
+void readParameters(PolynomialPanelState& state) {
+    if (state.request.equations == state.readEquations) return;
+    state.readEquations = state.request.equations;
+    try {
+        state.ranges = parameterRanges(state.readEquations, state.ranges);
+        state.problem.clear();
+    } catch (const std::exception& error) {
+        state.problem = error.what();
+    }
+}
+
+void runPolynomial(PolynomialPanelState& state) {
+    PolynomialRequest request = state.request;
+    request.parameterRanges = state.boundsFromRanges ? state.ranges : std::vector<ParameterRange>{};
+    state.job.start(std::move(request));
+}
+
 Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome& outcome) {
     Problems problems = editor.insert({}, -1, polynomialNode(outcome));
     reportProblems(ui, problems);
@@ -62,6 +114,10 @@ Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome&
 
 void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& state) {
     if (!state.open) return;
+    // first shown in the viewport's lower left, clear of the statistics overlay
+    const ImGuiViewport* screen = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(screen->WorkPos.x + 16, screen->WorkPos.y + screen->WorkSize.y - 16),
+                            ImGuiCond_FirstUseEver, ImVec2(0, 1));
     ImGui::SetNextWindowSize(ImVec2(520, 420), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Polynomial", &state.open)) {
         bool running = state.job.running();
@@ -75,11 +131,9 @@ void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& stat
             ImGui::Text("%.1f s  basis %zu  pairs left %zu  %s", p.elapsedSeconds, p.basisSize, p.pairsLeft,
                         p.stage.c_str());
         } else {
-            if (ImGui::Button("Run")) {
-                PolynomialRequest request = state.request;
-                if (state.useRange) request.parameterRange = std::pair{state.rangeMin, state.rangeMax};
-                state.job.start(std::move(request));
-            }
+            ImGui::BeginDisabled(!state.problem.empty());
+            if (ImGui::Button("Run")) runPolynomial(state);
+            ImGui::EndDisabled();
             if (std::optional<PolynomialOutcome> outcome = state.job.outcome()) outcomeWidgets(editor, ui, *outcome);
         }
     }

@@ -13,11 +13,23 @@ namespace sdfwb::ui {
 // What the window edits between frames (not part of the scene).
 struct PolynomialPanelState {
     bool open = false;
+    // Run sends this with parameterRanges set from `ranges` (when boundsFromRanges).
     PolynomialRequest request;
-    bool useRange = false;  // bounds from the parameter range, else the node's defaults
-    double rangeMin = -1, rangeMax = 1;
+    bool boundsFromRanges = true;        // else the node's default bounds
+    std::vector<ParameterRange> ranges;  // of the equations as last read
+    std::string readEquations;           // the text `ranges` and `problem` describe
+    std::string problem;                 // why those equations cannot run, "" when they can
     PolynomialJob job;
 };
+
+// Re-reads the equations when they changed since the last call: the ranges of
+// parameters still present are kept, new parameters get their defaults, and
+// `problem` says why the equations cannot run (with a column) or is cleared.
+void readParameters(PolynomialPanelState& state);
+
+// Starts the job on the panel's request, the ranges included (after
+// readParameters; requires an empty `problem`).
+void runPolynomial(PolynomialPanelState& state);
 
 // Adds the outcome's node as the root's last child and selects it; reports a
 // refused edit to `ui`. Requires outcome.isSurface().

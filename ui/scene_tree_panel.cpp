@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/formula_field.h"
 #include "ui/panels.h"
 
 namespace sdfwb::ui {
@@ -151,7 +152,9 @@ void drawAddMenuItems(Editor& editor, UiState& ui) {
         for (const scene::KindSpec& spec : scene::allKinds()) {
             bool isPrimitive = spec.category == scene::NodeCategory::Primitive;
             if (isPrimitive != primitives || spec.minChildren > 0) continue;
-            if (ImGui::MenuItem(std::string(spec.name).c_str())) {
+            if (formulaField(spec)) {
+                drawAddFormulaMenu(editor, ui, spec);
+            } else if (ImGui::MenuItem(std::string(spec.name).c_str())) {
                 reportProblems(ui, editor.add(spec.kind, std::nullopt));
             }
         }

@@ -38,6 +38,9 @@ constexpr CommandSpec kCommands[] = {
     {"save", 1, 1, "save <file.json>"},
     {"open", 1, 1, "open <file.json>"},
     {"quit", 0, 1, "quit [discard]"},
+    {"polynomial", 1, 4,
+     "polynomial open|close|run|add, polynomial equations <text>, polynomial order <name>, "
+     "polynomial range <parameter> <from> <to>"},
 };
 
 const CommandSpec* findCommand(std::string_view name) {
@@ -123,7 +126,9 @@ std::vector<ScriptCommand> parseScript(std::string_view text, const std::string&
             for (const CommandSpec& s : kCommands) list += (list.empty() ? "" : ", ") + std::string(s.name);
             fail("unknown command \"" + command.name + "\" (known: " + list + ")");
         }
-        if (command.name == "set" && command.args.size() >= 2) {
+        bool keepsRest = command.name == "set" || (command.name == "polynomial" && !command.args.empty() &&
+                                                   command.args[0] == "equations");
+        if (keepsRest && command.args.size() >= 2) {
             // the value is the rest of the line, spaces included
             std::string_view rest = trim(line.substr(line.find(command.args[0], command.name.size()) + command.args[0].size()));
             command.args = {command.args[0], std::string(rest)};
@@ -305,8 +310,65 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         host.quit();
         return done();
     }
+    if (c.name == "polynomial") return runPolynomial(c, editor, ui, host);
     // parseScript admits only the commands handled above
     return fail(c, "no handler for this command (a bug: please report it)");
+}
+
+ScriptStatus ScriptRunner::runPolynomial(const ScriptCommand& c, Editor& editor, UiState& ui, ScriptHost& host) {
+    PolynomialPanelState& panel = host.polynomialPanel();
+    const std::vector<std::string>& a = c.args;
+    auto done = [&](const Problems& problems = {}) {
+        if (!problems.empty()) return fail(c, joined(problems));
+        ++next_;
+        return ScriptStatus::Finished;
+    };
+    const std::string& action = a[0];
+    auto arguments = [&](size_t count) { return a.size() == count + 1; };
+    if ((action == "open" || action == "close") && arguments(0)) {
+        panel.open = action == "open";
+        return done();
+    }
+    if (action == "equations" && arguments(1)) {
+        panel.request.equations = a[1];
+        return done();
+    }
+    if (action == "order" && arguments(1)) {
+        std::optional<algebra::EliminationOrder> order = algebra::elimination_order_from_name(a[1]);
+        if (!order) return fail(c, "unknown order \"" + a[1] + "\" (see implicitize --help)");
+        panel.request.order = *order;
+        return done();
+    }
+    if (action == "range" && arguments(3)) {
+        readParameters(panel);
+        double from = 0, to = 0;
+        if (!parseNumber(a[2], from) || !parseNumber(a[3], to)) return fail(c, "the range must be two numbers");
+        for (ParameterRange& range : panel.ranges) {
+            if (range.name != a[1]) continue;
+            range.min = from;
+            range.max = to;
+            return done();
+        }
+        return fail(c, "the equations have no parameter \"" + a[1] + "\"");
+    }
+    if (action == "run" && arguments(0)) {
+        if (!polynomialRunning_) {
+            readParameters(panel);
+            if (!panel.problem.empty()) return fail(c, panel.problem);
+            ::sdfwb::ui::runPolynomial(panel);
+            polynomialRunning_ = true;
+        }
+        if (panel.job.running()) return ScriptStatus::Running;
+        polynomialRunning_ = false;
+        PolynomialOutcome outcome = panel.job.outcome().value();
+        return outcome.ok ? done() : fail(c, outcome.message);
+    }
+    if (action == "add" && arguments(0)) {
+        std::optional<PolynomialOutcome> outcome = panel.job.outcome();
+        if (!outcome || !outcome->isSurface()) return fail(c, "no surface to add (run a surface's equations first)");
+        return done(addPolynomialNode(editor, ui, *outcome));
+    }
+    return fail(c, "usage: " + std::string(findCommand("polynomial")->usage));
 }
 
 std::string screenshotScript(const std::string& output, int frames) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ui/editor.h"
+#include "ui/polynomial_panel.h"
 #include "ui/ui_state.h"
 
 namespace sdfwb::ui {
@@ -42,6 +43,8 @@ public:
     // Opens a scene file in place of the current one; "" or the error.
     virtual std::string open(const std::filesystem::path& path) = 0;
     virtual void quit() = 0;
+    // The polynomial panel the `polynomial` commands drive.
+    virtual PolynomialPanelState& polynomialPanel() = 0;
 };
 
 enum class ScriptStatus { Running, Finished, Failed };
@@ -65,12 +68,14 @@ private:
     ScriptStatus fail(const ScriptCommand& command, const std::string& reason);
     ScriptStatus run(const ScriptCommand& command, Editor& editor, UiState& ui, ScriptHost& host);
     bool waitIdle(const ScriptCommand& command, ScriptHost& host);
+    ScriptStatus runPolynomial(const ScriptCommand& command, Editor& editor, UiState& ui, ScriptHost& host);
 
     std::vector<ScriptCommand> commands_;
     std::string source_;
     size_t next_ = 0;
     int framesLeft_ = -1;  // `wait N` in progress when >= 0
     bool waitingIdle_ = false;
+    bool polynomialRunning_ = false;  // `polynomial run` started the job
     std::chrono::steady_clock::time_point waitStart_;
     std::string error_;
 };

@@ -3,6 +3,7 @@
 // view options, and the messages shown to the user. Panels read and change it;
 // the scene itself changes only through the Editor.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,9 @@ struct UiState {
     std::vector<Message> messages;
     // Problems of the last refused inspector edit, shown inline under it.
     std::vector<std::string> inspectorProblems;
+
+    // Formulas being typed in the Add menu, by node kind name.
+    std::map<std::string, std::string> addFormulaDrafts;
 
     // Name typed for "save the selection to the primitive library".
     std::string libraryName;

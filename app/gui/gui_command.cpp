@@ -55,6 +55,7 @@ public:
     std::string save(const std::filesystem::path& path) override { return saveScene(app_, path); }
     std::string open(const std::filesystem::path& path) override { return openScene(app_, path); }
     void quit() override { app_.quit = true; }
+    ui::PolynomialPanelState& polynomialPanel() override { return app_.polynomial; }
 
 private:
     AppState& app_;
@@ -86,7 +87,8 @@ void setUpStyle(float scale) {
 
 void runFrame(AppState& app, Host& host) {
     double start = glfwGetTime();
-    bool busy = !host.idle() || app.script || app.snapshot.running();
+    // a running implicitization redraws its live progress every frame
+    bool busy = !host.idle() || app.script || app.snapshot.running() || app.polynomial.job.running();
     if (busy) {
         glfwPollEvents();
     } else {

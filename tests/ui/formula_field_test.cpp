@@ -1,6 +1,7 @@
 // Formula fields in the inspector: a draft that does not parse is refused with
 // its column and leaves the scene alone; a valid one is applied as one undo
-// step; the inspector draws a formula node without editing it.
+// step; the inspector draws a formula node without editing it. In the Add
+// menu, a formula becomes a new node only when it is valid.
 
 #include <gtest/gtest.h>
 
@@ -56,6 +57,48 @@ TEST(FormulaField, PolynomialFieldRejectsWhatIsNotAPolynomial) {
     EXPECT_NE(tryFormulaText(s.editor, s.path, s.field, "sin(x) - y", "k"), "");
     EXPECT_EQ(tryFormulaText(s.editor, s.path, s.field, "x*y - z", "k"), "");
     EXPECT_EQ(s.formula(), "x*y - z");
+}
+
+TEST(AddFormula, ValidFormulaBecomesANewNodeInOneUndoStep) {
+    scene::Scene start;
+    Editor editor(start);
+    const scene::KindSpec& implicit = scene::kindSpec(scene::NodeKind::Implicit);
+    ASSERT_EQ(addFormulaNode(editor, implicit, "x^4 + y^4 + z^4 - 1"), Problems{});
+    ASSERT_EQ(editor.scene().root.children.size(), 1u);
+    const scene::Node& node = editor.scene().root.children[0];
+    EXPECT_EQ(node.kind, scene::NodeKind::Implicit);
+    EXPECT_EQ(node.text("formula"), "x^4 + y^4 + z^4 - 1");
+    EXPECT_EQ(editor.selection(), NodePath{0});
+    ASSERT_TRUE(editor.undo());
+    EXPECT_TRUE(editor.scene().root.children.empty());
+}
+
+TEST(AddFormula, InvalidFormulaIsRefusedWithItsColumn) {
+    scene::Scene start;
+    Editor editor(start);
+    auto revision = editor.revision();
+    Problems sdf = addFormulaNode(editor, scene::kindSpec(scene::NodeKind::Sdf), "length(p) - ");
+    ASSERT_EQ(sdf.size(), 1u);
+    EXPECT_EQ(sdf[0].find("column 13"), 0u) << sdf[0];
+    Problems polynomial = addFormulaNode(editor, scene::kindSpec(scene::NodeKind::Polynomial), "sqrt(x) - y");
+    ASSERT_EQ(polynomial.size(), 1u);
+    EXPECT_NE(polynomial[0].find("column 1"), std::string::npos) << polynomial[0];
+    EXPECT_FALSE(addFormulaNode(editor, scene::kindSpec(scene::NodeKind::Sphere), "x").empty());
+    EXPECT_EQ(editor.revision(), revision);
+    EXPECT_TRUE(editor.scene().root.children.empty());
+}
+
+TEST(AddFormula, GoesWhereAddPutsItsKind) {
+    scene::Scene start;
+    start.root.children.push_back(scene::Node::make(scene::NodeKind::Union));
+    start.root.children[0].children.push_back(scene::Node::make(scene::NodeKind::Sphere));
+    Editor editor(start);
+    editor.select(NodePath{0, 0});
+    ASSERT_EQ(addFormulaNode(editor, scene::kindSpec(scene::NodeKind::Sdf), "length(p) - 0.5"), Problems{});
+    // a sphere takes no child: the new node goes next to it in the union
+    ASSERT_EQ(editor.scene().root.children[0].children.size(), 2u);
+    EXPECT_EQ(editor.scene().root.children[0].children[1].kind, scene::NodeKind::Sdf);
+    EXPECT_EQ(editor.selection(), (NodePath{0, 1}));
 }
 
 TEST(FormulaField, InspectorDrawsFormulaNodesWithoutEditing) {

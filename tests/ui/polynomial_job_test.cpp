@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+#include <stdexcept>
+
 #include "scene/scene_json.h"
 #include "ui/polynomial_panel.h"
 
@@ -29,31 +32,78 @@ TEST(PolynomialJob, WhitneyUmbrellaGivesItsEquation) {
     EXPECT_FALSE(o.bounds.has_value());
 }
 
+PolynomialRequest request(std::string equations, std::vector<ParameterRange> ranges = {}) {
+    PolynomialRequest r;
+    r.equations = std::move(equations);
+    r.parameterRanges = std::move(ranges);
+    return r;
+}
+
 TEST(PolynomialJob, ParseErrorsComeBackAsOneLine) {
-    PolynomialOutcome o = runToEnd({.equations = "x = u*; y = v; z = u"});
+    PolynomialOutcome o = runToEnd(request("x = u*; y = v; z = u"));
     EXPECT_FALSE(o.ok);
     EXPECT_NE(o.message.find("column"), std::string::npos) << o.message;
     EXPECT_EQ(o.message.find('\n'), std::string::npos);
 }
 
-TEST(PolynomialJob, ParameterRangeGivesSampledBounds) {
-    PolynomialOutcome o = runToEnd({.parameterRange = std::pair{-1.0, 1.0}});
+TEST(PolynomialJob, EachParameterRangeShapesTheSampledBounds) {
+    PolynomialOutcome o = runToEnd(request("x = u*v; y = v; z = u^2", {{"v", -2, 2}, {"u", -1, 1}}));
     ASSERT_TRUE(o.ok) << o.message;
     ASSERT_TRUE(o.bounds.has_value());
-    // x = u*v and y = v in [-1, 1], z = u^2 in [0, 1]; padded by 5%
-    EXPECT_NEAR(o.bounds->first.x, -1.1, 1e-9);
-    EXPECT_NEAR(o.bounds->second.y, 1.1, 1e-9);
+    // x = u*v and y = v in [-2, 2], z = u^2 in [0, 1]; padded by 5%
+    EXPECT_NEAR(o.bounds->first.x, -2.2, 1e-9);
+    EXPECT_NEAR(o.bounds->second.y, 2.2, 1e-9);
     EXPECT_NEAR(o.bounds->first.z, -0.05, 1e-9);
     EXPECT_NEAR(o.bounds->second.z, 1.05, 1e-9);
+    EXPECT_THROW(sampledBounds("x = u*v; y = v; z = u^2", std::vector<ParameterRange>{{"u", 0, 1}}),
+                 std::invalid_argument);
+}
+
+TEST(PolynomialJob, ParametersGetRangesByKind) {
+    // angles run over a full turn, other parameters over [-1, 1]
+    std::vector<ParameterRange> ranges = parameterRanges("x = (2 + cos(v))*cos(u); y = (2 + cos(v))*sin(u); z = w*sin(v)");
+    ASSERT_EQ(ranges.size(), 3u);
+    EXPECT_EQ(ranges[0].name, "v");
+    EXPECT_EQ(ranges[1].name, "u");
+    EXPECT_EQ(ranges[2], (ParameterRange{"w", -1, 1}));
+    EXPECT_DOUBLE_EQ(ranges[0].max, 2 * std::numbers::pi);
+    EXPECT_DOUBLE_EQ(ranges[1].min, 0);
+    // a range the user gave is kept while its parameter stays, in the same role
+    std::vector<ParameterRange> edited{{"w", 0, 3}, {"gone", 5, 6}, {"u", 0, 1, true}, {"v", 2, 3}};
+    std::vector<ParameterRange> kept = parameterRanges("x = w; y = w^2 + u; z = t*cos(v)", edited);
+    EXPECT_EQ(kept, (std::vector<ParameterRange>{
+                        {"w", 0, 3}, {"u", -1, 1}, {"t", -1, 1}, {"v", 0, 2 * std::numbers::pi, true}}));
+}
+
+TEST(PolynomialPanel, ReadsEquationsAsTheyAreTypedAndRunsInTheChosenOrder) {
+    PolynomialPanelState state;
+    state.request.equations = "x = t; y = t^2; z = sqrt(t)";
+    readParameters(state);
+    EXPECT_NE(state.problem.find("column 21"), std::string::npos) << state.problem;
+    state.request.equations = "x = t; y = t^2; z = t^3";
+    readParameters(state);
+    EXPECT_EQ(state.problem, "");
+    ASSERT_EQ(state.ranges, (std::vector<ParameterRange>{{"t", -1, 1}}));
+    state.ranges[0].max = 2;
+    state.request.order = algebra::EliminationOrder::lex;
+    runPolynomial(state);
+    state.job.wait();
+    PolynomialOutcome o = state.job.outcome().value();
+    ASSERT_TRUE(o.ok) << o.message;
+    // a curve: its lex basis, and no node to add
+    EXPECT_EQ(o.generators, (std::vector<std::string>{"y^3 - z^2", "x*z - y^2", "x*y - z", "x^2 - y"}));
+    EXPECT_FALSE(o.isSurface());
+    ASSERT_TRUE(o.bounds.has_value());
+    EXPECT_NEAR(o.bounds->second.z, 8 + 0.05 * 9, 1e-9);  // t^3 over [-1, 2]
 }
 
 // Cancel and progress only touch the shared state: they return at once while
-// the worker runs, and the run ends either completed or "cancelled". (A long
-// input is not used: the engine's modular phase does not poll the budget yet,
-// so e.g. the Moebius strip with half-angle ignores Cancel; see the report.)
+// the worker runs, and the run ends either completed or "cancelled".
 TEST(PolynomialJob, CancelAndProgressNeverWaitForTheWorker) {
     PolynomialJob job;
-    job.start({.equations = "x = u^3 - v; y = u*v^2 + u; z = v^3 - u^2*v", .timeLimitSeconds = 30});
+    PolynomialRequest hard = request("x = u^3 - v; y = u*v^2 + u; z = v^3 - u^2*v");
+    hard.timeLimitSeconds = 30;
+    job.start(hard);
     PolynomialProgress p = job.progress();
     EXPECT_GE(p.elapsedSeconds, 0.0);
     job.cancel();
@@ -64,7 +114,7 @@ TEST(PolynomialJob, CancelAndProgressNeverWaitForTheWorker) {
 }
 
 TEST(PolynomialJob, OutcomeBecomesAValidPolynomialNode) {
-    PolynomialOutcome o = runToEnd({.parameterRange = std::pair{-1.0, 1.0}});
+    PolynomialOutcome o = runToEnd(request("x = u*v; y = v; z = u^2", {{"u", -1, 1}, {"v", -1, 1}}));
     ASSERT_TRUE(o.isSurface());
     scene::Scene start;
     Editor editor(start);

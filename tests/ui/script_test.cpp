@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "scene/scene_json.h"
 #include "ui/script.h"
 
@@ -28,6 +31,8 @@ struct FakeHost : ScriptHost {
     }
     std::string open(const std::filesystem::path&) override { return "cannot open in tests"; }
     void quit() override { quitCalled = true; }
+    PolynomialPanelState polynomial;
+    PolynomialPanelState& polynomialPanel() override { return polynomial; }
 };
 
 struct ScriptRun {
@@ -152,6 +157,56 @@ TEST(ScriptRunTest, WaitIdleTimesOut) {
     for (int i = 0; i < 100 && status == ScriptStatus::Running; ++i) status = runner.step(editor, ui, host);
     EXPECT_EQ(status, ScriptStatus::Failed);
     EXPECT_EQ(runner.error().rfind("s:1: wait: still busy after 0 s", 0), 0u) << runner.error();
+}
+
+ScriptStatus runUntilDone(ScriptRunner& runner, Editor& editor, UiState& ui, FakeHost& host) {
+    ScriptStatus status = ScriptStatus::Running;
+    for (int frame = 0; frame < 6000 && status == ScriptStatus::Running; ++frame) {
+        status = runner.step(editor, ui, host);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return status;
+}
+
+TEST(ScriptRunTest, PolynomialCommandsImplicitizeAndAddTheSurface) {
+    FakeHost host;
+    Editor editor;
+    UiState ui;
+    host.editor = &editor;
+    ScriptRunner runner(parseScript("polynomial open\n"
+                                    "polynomial equations x = u*v; y = v; z = u^2\n"
+                                    "polynomial order lex\n"
+                                    "polynomial range v -2 2\n"
+                                    "polynomial run\n"
+                                    "polynomial add\n",
+                                    "s"),
+                        "s");
+    ASSERT_EQ(runUntilDone(runner, editor, ui, host), ScriptStatus::Finished) << runner.error();
+    EXPECT_TRUE(host.polynomial.open);
+    EXPECT_EQ(host.polynomial.request.order, algebra::EliminationOrder::lex);
+    ASSERT_EQ(editor.scene().root.children.size(), 1u);
+    const scene::Node& node = editor.scene().root.children[0];
+    EXPECT_EQ(node.text("formula"), "y^2*z - x^2");
+    EXPECT_NEAR(node.vec3("bounds_max").y, 2.2, 1e-9);  // v in [-2, 2], padded by 5%
+}
+
+TEST(ScriptRunTest, PolynomialCommandErrorsNameTheLine) {
+    FakeHost host;
+    Editor editor;
+    UiState ui;
+    host.editor = &editor;
+    auto failure = [&](const std::string& script) {
+        ScriptRunner runner(parseScript(script, "s"), "s");
+        EXPECT_EQ(runUntilDone(runner, editor, ui, host), ScriptStatus::Failed);
+        return runner.error();
+    };
+    EXPECT_EQ(failure("polynomial equations x = t; y = sqrt(t); z = t\npolynomial run\n"),
+              "s:2: polynomial: column 12: 'sqrt' is not a polynomial or rational function");
+    EXPECT_EQ(failure("polynomial equations x = t; y = t^2; z = t^3\npolynomial range s 0 1\n"),
+              "s:2: polynomial: the equations have no parameter \"s\"");
+    EXPECT_EQ(failure("polynomial run\npolynomial add\n").rfind("s:2: polynomial: no surface to add", 0), 0u);
+    EXPECT_EQ(failure("polynomial order revlex\n").rfind("s:1: polynomial: unknown order \"revlex\"", 0), 0u);
+    EXPECT_TRUE(editor.scene().root.children.empty());
 }
 
 }  // namespace
