@@ -14,6 +14,7 @@
 
 #include "app/gui/app_state.h"
 #include "app/gui/file_actions.h"
+#include "app/gui/key_gate.h"
 #include "app/gui/main_window.h"
 #include "app/gui/window_capture.h"
 #include "app/scene_source.h"
@@ -63,11 +64,14 @@ private:
 
 std::string glfwErrorText;
 
-// Installed before ImGui's backend, which then chains to it.
-void queueKeyPress(GLFWwindow* window, int key, int, int action, int mods) {
-    if (action == GLFW_RELEASE) return;
+KeyGate keyGate;  // one window per process
+
+// Installed after ImGui's backend: shortcuts see every press at once, ImGui
+// sees them through the gate.
+void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
     auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(window));
-    if (app) app->keyPresses.push_back({key, mods});
+    if (app && action != GLFW_RELEASE) app->keyPresses.push_back({key, mods});
+    keyGate.onKey(window, key, scancode, action, mods);
 }
 
 void setUpStyle(float scale) {
@@ -88,7 +92,9 @@ void setUpStyle(float scale) {
 void runFrame(AppState& app, Host& host) {
     double start = glfwGetTime();
     // a running implicitization redraws its live progress every frame
-    bool busy = !host.idle() || app.script || app.snapshot.running() || app.polynomial.job.running();
+    bool busy = !host.idle() || app.script || app.snapshot.running() || app.polynomial.job.running() ||
+                keyGate.holding();
+    keyGate.beginFrame(app.window);
     if (busy) {
         glfwPollEvents();
     } else {
@@ -204,8 +210,8 @@ int runGui(const GuiArguments& arguments) {
         float scaleX = 1, scaleY = 1;
         glfwGetWindowContentScale(window, &scaleX, &scaleY);
         setUpStyle(std::max(1.0f, scaleY));
-        glfwSetKeyCallback(window, queueKeyPress);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
+        keyGate.setNext(glfwSetKeyCallback(window, onKey));
         ImGui_ImplOpenGL3_Init("#version 330 core");
 
         AppState app;
