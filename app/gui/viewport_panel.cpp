@@ -74,9 +74,11 @@ void statsOverlay(AppState& app, ImVec2 corner) {
     ImGui::SetCursorScreenPos(ImVec2(corner.x + 8, corner.y + 8));
     ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(20, 22, 26, 160));
     ImGui::BeginChild("stats", size, false, ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
-    bool gl = app.ui.backend == ui::ViewBackend::Gl || app.ui.compare != ui::CompareMode::Off;
+    // the compare views show both images, and these figures are the GLSL side's
+    bool comparing = app.ui.compare != ui::CompareMode::Off;
+    const char* backend = comparing ? "GLSL figures, CPU compared" : app.ui.backend == ui::ViewBackend::Gl ? "GLSL" : "CPU";
     ImGui::Text("frame %.0f ms (slowest %.0f)   backend %s", app.frameSeconds * 1000.0f,
-                app.slowestFrameSeconds * 1000.0f, gl ? "GLSL" : "CPU");
+                app.slowestFrameSeconds * 1000.0f, backend);
     ImGui::Text("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa, s.renderSeconds * 1000.0,
                 s.gpuSeconds * 1000.0);
     ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
