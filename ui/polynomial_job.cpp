@@ -135,10 +135,11 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view 
     return std::pair{low, high};
 }
 
-scene::Node polynomialNode(const PolynomialOutcome& outcome) {
+scene::Node polynomialNode(const PolynomialOutcome& outcome, double sheetThickness) {
     scene::Node node = scene::Node::make(scene::NodeKind::Polynomial);
     node.name = "polynomial";
     node.set("formula", outcome.generators.at(0));
+    node.set("sheet_thickness", sheetThickness);
     if (outcome.bounds) {
         node.set("bounds_min", outcome.bounds->first);
         node.set("bounds_max", outcome.bounds->second);

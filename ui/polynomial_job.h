@@ -117,7 +117,8 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> sampledBounds(std::string_view 
                                                                std::span<const ParameterRange> ranges);
 
 // A `polynomial` node named "polynomial" with the outcome's generator as its
-// formula and its bounds when sampled. Requires outcome.isSurface().
-scene::Node polynomialNode(const PolynomialOutcome& outcome);
+// formula, its bounds when sampled, and the sheet thickness (0: the solid
+// F <= 0). Requires outcome.isSurface().
+scene::Node polynomialNode(const PolynomialOutcome& outcome, double sheetThickness = 0);
 
 }  // namespace sdfwb::ui

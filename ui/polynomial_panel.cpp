@@ -70,7 +70,7 @@ void requestWidgets(PolynomialPanelState& state) {
     if (r.timeLimitSeconds < 0.1) r.timeLimitSeconds = 0.1;
 }
 
-void outcomeWidgets(Editor& editor, UiState& ui, const PolynomialOutcome& outcome) {
+void outcomeWidgets(Editor& editor, UiState& ui, PolynomialPanelState& state, const PolynomialOutcome& outcome) {
     ImGui::Separator();
     if (!outcome.ok) {
         showProblem(outcome.message);
@@ -82,7 +82,15 @@ void outcomeWidgets(Editor& editor, UiState& ui, const PolynomialOutcome& outcom
         ImGui::TextWrapped("%s", line.c_str());
     }
     ImGui::BeginDisabled(!outcome.isSurface());
-    if (ImGui::Button("Add to scene")) addPolynomialNode(editor, ui, outcome);
+    if (ImGui::Button("Add to scene")) addPolynomialNode(editor, ui, outcome, state.sheetThickness);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    ImGui::InputDouble("sheet thickness", &state.sheetThickness, 0, 0, "%.3g");
+    state.sheetThickness = std::max(state.sheetThickness, 0.0);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("0: the solid F <= 0 in the box. An open surface (Moebius strip, Enneper) shows\n"
+                          "better as a sheet of this thickness around F = 0, e.g. 0.02.");
+    }
     ImGui::EndDisabled();
 }
 
@@ -105,8 +113,8 @@ void runPolynomial(PolynomialPanelState& state) {
     state.job.start(std::move(request));
 }
 
-Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome& outcome) {
-    Problems problems = editor.insert({}, -1, polynomialNode(outcome));
+Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome& outcome, double sheetThickness) {
+    Problems problems = editor.insert({}, -1, polynomialNode(outcome, sheetThickness));
     reportProblems(ui, problems);
     if (problems.empty()) ui.info("added a polynomial node of degree " + std::to_string(outcome.degree));
     return problems;
@@ -134,7 +142,7 @@ void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& stat
             ImGui::BeginDisabled(!state.problem.empty());
             if (ImGui::Button("Run")) runPolynomial(state);
             ImGui::EndDisabled();
-            if (std::optional<PolynomialOutcome> outcome = state.job.outcome()) outcomeWidgets(editor, ui, *outcome);
+            if (std::optional<PolynomialOutcome> outcome = state.job.outcome()) outcomeWidgets(editor, ui, state, *outcome);
         }
     }
     ImGui::End();

@@ -19,6 +19,7 @@ struct PolynomialPanelState {
     std::vector<ParameterRange> ranges;  // of the equations as last read
     std::string readEquations;           // the text `ranges` and `problem` describe
     std::string problem;                 // why those equations cannot run, "" when they can
+    double sheetThickness = 0;           // of the node added: 0 the solid F <= 0, else a sheet
     PolynomialJob job;
 };
 
@@ -31,9 +32,9 @@ void readParameters(PolynomialPanelState& state);
 // readParameters; requires an empty `problem`).
 void runPolynomial(PolynomialPanelState& state);
 
-// Adds the outcome's node as the root's last child and selects it; reports a
-// refused edit to `ui`. Requires outcome.isSurface().
-Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome& outcome);
+// Adds the outcome's node (polynomialNode) as the root's last child and
+// selects it; reports a refused edit to `ui`. Requires outcome.isSurface().
+Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome& outcome, double sheetThickness);
 
 // Draws the window while state.open (never blocks: the job is only polled).
 void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& state);

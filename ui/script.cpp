@@ -40,7 +40,7 @@ constexpr CommandSpec kCommands[] = {
     {"quit", 0, 1, "quit [discard]"},
     {"polynomial", 1, 4,
      "polynomial open|close|run|add, polynomial equations <text>, polynomial order <name>, "
-     "polynomial range <parameter> <from> <to>"},
+     "polynomial range <parameter> <from> <to>, polynomial sheet <thickness>"},
 };
 
 const CommandSpec* findCommand(std::string_view name) {
@@ -339,6 +339,12 @@ ScriptStatus ScriptRunner::runPolynomial(const ScriptCommand& c, Editor& editor,
         panel.request.order = *order;
         return done();
     }
+    if (action == "sheet" && arguments(1)) {
+        double thickness = 0;
+        if (!parseNumber(a[1], thickness) || thickness < 0) return fail(c, "the sheet thickness must be a number >= 0");
+        panel.sheetThickness = thickness;
+        return done();
+    }
     if (action == "range" && arguments(3)) {
         readParameters(panel);
         double from = 0, to = 0;
@@ -366,7 +372,7 @@ ScriptStatus ScriptRunner::runPolynomial(const ScriptCommand& c, Editor& editor,
     if (action == "add" && arguments(0)) {
         std::optional<PolynomialOutcome> outcome = panel.job.outcome();
         if (!outcome || !outcome->isSurface()) return fail(c, "no surface to add (run a surface's equations first)");
-        return done(addPolynomialNode(editor, ui, *outcome));
+        return done(addPolynomialNode(editor, ui, *outcome, panel.sheetThickness));
     }
     return fail(c, "usage: " + std::string(findCommand("polynomial")->usage));
 }

@@ -45,7 +45,9 @@ ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer
         tight.render.maxSteps = std::min(8192, static_cast<int>(tight.render.maxSteps * options.referenceTightening));
         tight.render.shadowSteps = std::min(4096, static_cast<int>(tight.render.shadowSteps * options.referenceTightening));
         program::Program referenceProgram = program::compileScene(tight, compileOptions);
-        cpu::RenderOutcome reference = cpu::renderCpu(referenceProgram, {.precision = cpu::Precision::Double});
+        cpu::RenderControl doublePrecision;
+        doublePrecision.precision = cpu::Precision::Double;
+        cpu::RenderOutcome reference = cpu::renderCpu(referenceProgram, doublePrecision);
         result.hasReference = true;
         result.referenceHitRatio = image::frameStats(reference.frame).hitRatio;
         result.cpuVsReference = image::compareImages(cpuFrame.frame.color, reference.frame.color);

@@ -142,7 +142,11 @@ std::optional<PolynomialScene> polynomialScene(const scene::Scene& scene) {
         result.offset += node->vec3("offset");
         node = &node->children.at(0);
     }
-    if (node->kind != scene::NodeKind::Polynomial || scene.environment.ground.enabled) return std::nullopt;
+    // a sheet's surfaces lie off F = 0, where the first root is not the answer
+    if (node->kind != scene::NodeKind::Polynomial || node->real("sheet_thickness") > 0 ||
+        scene.environment.ground.enabled) {
+        return std::nullopt;
+    }
     result.node = node;
     return result;
 }

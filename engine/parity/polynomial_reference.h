@@ -31,8 +31,9 @@ std::vector<double> alongRay(const PolynomialTerms& f, const glm::dvec3& origin,
 // The smallest root of the power-basis polynomial `c` in [t0, t1], if any.
 std::optional<double> firstRoot(const std::vector<double>& c, double t0, double t1);
 
-// Whether the scene is a polynomial node under translations only (what the
-// reference handles); the node and its world offset when it is.
+// Whether the scene is a solid polynomial node (no sheet) under translations
+// only, without ground (what the reference handles); the node and its world
+// offset when it is.
 struct PolynomialScene {
     const scene::Node* node = nullptr;
     glm::dvec3 offset{0.0};  // world position of the node's origin

@@ -167,7 +167,9 @@ private:
         case NodeKind::Polynomial: {
             dvec3 lo = node.vec3("bounds_min"), hi = node.vec3("bounds_max");
             emit({Opcode::ImplicitFormula, s, p, -1,
-                  addParams({dvec4((lo + hi) * 0.5, node.real("max_step")), dvec4((hi - lo) * 0.5, 0)}), material,
+                  addParams({dvec4((lo + hi) * 0.5, node.real("max_step")),
+                             dvec4((hi - lo) * 0.5, node.real("sheet_thickness") * 0.5)}),
+                  material,
                   addFormula(node.text("formula"), true)});
             break;
         }

@@ -61,12 +61,16 @@ const std::array kRepeat = {vec3("spacing", NonNegative, dvec3(2.0, 0.0, 2.0)),
 const std::array kRepeatInfinite = {vec3("period", NonNegative, dvec3(2.0, 0.0, 2.0))};
 FieldSpec formula(Range kind, std::string_view value) { return {"formula", Formula, kind, std::string(value), {}, ""}; }
 const std::array kSdf = {formula(SdfFormula, "length(p) - 1"), material()};
+// sheet_thickness 0: the solid F <= 0; more: a sheet that thick around F = 0
+// (open surfaces such as the Moebius strip have no inside worth showing)
 const std::array kImplicit = {formula(ImplicitFormula, "x^2 + y^2 + z^2 - 1"),
                               vec3("bounds_min", Any, dvec3(-1.5)), vec3("bounds_max", Any, dvec3(1.5)),
-                              real("max_step", Positive, 0.25), material()};
+                              real("max_step", Positive, 0.25), real("sheet_thickness", NonNegative, 0.0),
+                              material()};
 const std::array kPolynomial = {formula(PolynomialFormula, "x^2 + y^2 + z^2 - 1"),
                                 vec3("bounds_min", Any, dvec3(-1.5)), vec3("bounds_max", Any, dvec3(1.5)),
-                                real("max_step", Positive, 0.25), material()};
+                                real("max_step", Positive, 0.25), real("sheet_thickness", NonNegative, 0.0),
+                                material()};
 
 using enum NodeKind;
 using enum NodeCategory;

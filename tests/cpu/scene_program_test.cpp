@@ -93,6 +93,27 @@ TEST(SceneProgram, FarFromTheOriginTheFloatBuildKeepsPrecision) {
     EXPECT_NEAR(distanceAt(s, probe, cpu::Precision::Float), exact, 1e-5);
 }
 
+TEST(SceneProgram, ImplicitIsTheSolidOrASheetAroundTheSurface) {
+    // F = x^2 + y^2 + z^2 - 1: |F| / |grad F| = |r^2 - 1| / 2r, exact enough near r = 1
+    Node implicit = Node::make(NodeKind::Polynomial);
+    implicit.set("formula", std::string("x^2 + y^2 + z^2 - 1"));
+    implicit.set("max_step", 10.0);
+    scene::Scene solid = sceneWithRoot(implicit);
+    implicit.set("sheet_thickness", 0.2);
+    scene::Scene sheet = sceneWithRoot(implicit);
+    for (double r : {0.5, 0.9, 1.0, 1.1, 1.3}) {
+        glm::dvec3 p(0, r * 0.6, r * 0.8);
+        double bound = std::abs(r * r - 1) / (2 * r);
+        EXPECT_NEAR(distanceAt(solid, p), r < 1 ? -bound : bound, 1e-12) << r;
+        // the sheet: inside within 0.1 of F = 0 on both sides, outside beyond,
+        // with steps of at most its thickness
+        EXPECT_NEAR(distanceAt(sheet, p), std::min(bound - 0.1, 0.2), 1e-12) << r;
+    }
+    // the box clips the sheet too: at z = 1.1 the sheet is inside, the box not
+    sheet.root.set("bounds_max", glm::dvec3(1.5, 1.5, 1.05));
+    EXPECT_NEAR(distanceAt(sheet, glm::dvec3(0, 0, 1.1)), 0.05, 1e-12);
+}
+
 TEST(SceneProgram, EmptyUnionIsFarAway) {
     scene::Scene s = sceneWithRoot(Node::make(NodeKind::Union));
     EXPECT_GT(distanceAt(s, {0, 0, 0}), 1e9);

@@ -119,12 +119,13 @@ TEST(PolynomialJob, OutcomeBecomesAValidPolynomialNode) {
     scene::Scene start;
     Editor editor(start);
     UiState ui;
-    ASSERT_TRUE(addPolynomialNode(editor, ui, o).empty());
+    ASSERT_TRUE(addPolynomialNode(editor, ui, o, 0.02).empty());
     ASSERT_EQ(editor.scene().root.children.size(), 1u);
     const scene::Node& node = editor.scene().root.children[0];
     EXPECT_EQ(node.kind, scene::NodeKind::Polynomial);
     EXPECT_EQ(node.text("formula"), o.generators[0]);
     EXPECT_EQ(node.vec3("bounds_min"), o.bounds->first);
+    EXPECT_EQ(node.real("sheet_thickness"), 0.02);
     nlohmann::ordered_json json = scene::sceneToJson(editor.scene());
     EXPECT_EQ(json["root"]["children"][0]["kind"], "polynomial");
     EXPECT_EQ(json["root"]["children"][0]["formula"], o.generators[0]);

@@ -38,14 +38,22 @@ SHARED_FN real instSdfFormula(real value) { return value; }
 // An implicit surface F = 0 (inside F < 0) inside its bounding box, with the
 // distance bound |F| / |grad F| (thesis, Proposition 1.2) clamped to a maximum
 // step: the bound is only local, overshooting far from the surface and useless
-// where grad F vanishes. q0 = (box centre, max step), q1 = (box half extents).
+// where grad F vanishes. q0 = (box centre, max step), q1 = (box half extents,
+// half the sheet thickness).
 SHARED_FN real instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1) {
     real box = sdBox(p - xyz(q0), xyz(q1));
     real gradientLength = length3(vec3(v.y, v.z, v.w));
-    real bound = q0.w;
+    real ratio = q0.w;  // grad F = 0 off the surface: a step of max_step
     if (gradientLength > real(0)) {
-        bound = min(abs(v.x) / gradientLength, q0.w);
+        ratio = abs(v.x) / gradientLength;
     }
+    // q1.w > 0: a sheet of that half-thickness h around F = 0, else the solid
+    // F <= 0. A step that overshoots F = 0 lands inside the solid, but can
+    // jump over a sheet: sheet steps stop at 2h, the sheet's thickness.
+    if (q1.w > real(0)) {
+        return max(box, min(ratio - q1.w, min(q0.w, real(2) * q1.w)));
+    }
+    real bound = min(ratio, q0.w);
     return max(box, v.x < real(0) ? -bound : bound);
 }
 
