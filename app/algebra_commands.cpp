@@ -112,7 +112,9 @@ int runImplicitize(const ImplicitizeArguments& a) {
             std::cout << out.dump() << "\n";
             return 0;
         }
-        if (result.generators.size() == 1) {
+        if (result.generators.empty()) {
+            std::cout << "no equation: the image is dense (the elimination ideal is zero)\n";
+        } else if (result.generators.size() == 1) {
             std::cout << result.generators[0].to_string() << " = 0\n";
         } else {
             std::cout << "the elimination ideal has " << result.generators.size()

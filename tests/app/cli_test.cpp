@@ -163,6 +163,9 @@ TEST_F(Cli, ImplicitizeTakesTheEliminationOrder) {
     ProcessResult fallback = run("implicitize \"x = t; y = t^2; z = t^3\" --json");
     EXPECT_EQ(fallback.output.find("{\"generators\":[\"y^2 - x*z\",\"x*y - z\",\"x^2 - y\"],"), 0u)
         << fallback.output;
+    ProcessResult dense = run("implicitize \"x = u; y = v; z = w\"");
+    EXPECT_EQ(dense.output.substr(0, dense.output.find('\n')),
+              "no equation: the image is dense (the elimination ideal is zero)");
     ProcessResult unknown = run("implicitize \"x = t; y = t^2; z = t^3\" --order revlex");
     EXPECT_EQ(unknown.exitCode, 2);
     EXPECT_EQ(unknown.output,
