@@ -51,7 +51,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
 // such as "x = u*v; y = v; z = u^2" to what algebra::implicitize takes. The
 // default is CosSinRelation: measured with tests/bench/algebra_bench (Nov
 // 2026), it implicitizes the torus, Moebius strip and cross-cap in under
-// 1 ms each, against 1.5, 13 and 72 ms with HalfAngle, whose denominators
+// 1 ms each, against 1.1, 12 and 71 ms with HalfAngle, whose denominators
 // grow with every angle.
 TrigConversion parseParametrization(std::string_view source,
                                     TrigStrategy strategy = TrigStrategy::CosSinRelation);
