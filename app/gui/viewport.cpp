@@ -186,7 +186,9 @@ void Viewport::updateCpu() {
 }
 
 void Viewport::finishStage(const image::Frame& frame, double seconds, const Stage& stage, bool gl) {
-    if (gl == glShown_) {
+    // a GL stage finishing while the CPU stands in is the image that takes
+    // over (update() swaps them next): its figures are the ones to show
+    if (gl == glShown_ || (gl && cpuFallback_)) {
         if (!gl) stats_.gpuSeconds = 0;
         stats_.width = frame.color.width;
         stats_.height = frame.color.height;

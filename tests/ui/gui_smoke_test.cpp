@@ -1,8 +1,10 @@
-// GUI smoke test: runs the real application under Xvfb with a script (open
-// the default scene, change a parameter, switch backend, undo, screenshots,
-// save) and checks what it produced: screenshots are not blank, the edit
-// changed the viewport, undo restored it, and the saved scene is the
-// expected one. Skipped when no X server can start, unless SDFWB_REQUIRE_GL=1.
+// GUI smoke test: runs the real application under Xvfb with scripts and
+// checks what they produced. One opens the default scene, changes a
+// parameter, switches backend, undoes and saves: screenshots are not blank,
+// the edit changed the viewport, undo restored it, the saved scene is the
+// expected one. One implicitizes in the Polynomial window and adds the
+// surface: it shows, and the saved node has the equation and sampled bounds.
+// Skipped when no X server can start, unless SDFWB_REQUIRE_GL=1.
 
 #include <gtest/gtest.h>
 
@@ -95,22 +97,35 @@ save saved.json
 quit
 )";
 
-TEST(GuiSmokeTest, ScriptedEditSwitchUndoAndSave) {
-    fs::path dir = fs::path(SDFWB_TEST_OUTPUT_DIR) / "gui_smoke";
+// Runs the workbench under Xvfb on `script` in a fresh folder `name` of the
+// test output, with its own XDG folders; returns that folder.
+fs::path runScript(const std::string& name, const char* script) {
+    fs::path dir = fs::path(SDFWB_TEST_OUTPUT_DIR) / name;
     fs::remove_all(dir);
     fs::create_directories(dir / "config");
     fs::create_directories(dir / "state");
-    std::ofstream(dir / "smoke.txt") << kScript;
-
-    if (std::system("xvfb-run -a true > /dev/null 2>&1") != 0) {
-        if (glRequired()) GTEST_FAIL() << "no X server could start (xvfb-run -a true failed), and SDFWB_REQUIRE_GL=1";
-        GTEST_SKIP() << "no X server could start (xvfb-run -a true failed)";
-    }
+    std::ofstream(dir / "script.txt") << script;
     std::string command = "cd '" + dir.string() + "' && env XDG_CONFIG_HOME='" + (dir / "config").string() +
-                          "' XDG_STATE_HOME='" + (dir / "state").string() +
-                          "' xvfb-run -a -s '-screen 0 1280x800x24' '" SDFWB_WORKBENCH "' gui --script smoke.txt > run.log 2>&1";
+                          "' XDG_STATE_HOME='" + (dir / "state").string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" +
+                          SDFWB_WORKBENCH + "' gui --script script.txt > run.log 2>&1";
     int status = std::system(command.c_str());
-    ASSERT_EQ(status, 0) << "the workbench failed:\n" << readAll(dir / "run.log");
+    EXPECT_EQ(status, 0) << "the workbench failed:\n" << readAll(dir / "run.log");
+    return dir;
+}
+
+class GuiSmokeTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (std::system("xvfb-run -a true > /dev/null 2>&1") != 0) {
+            if (glRequired()) GTEST_FAIL() << "no X server could start (xvfb-run -a true failed), and SDFWB_REQUIRE_GL=1";
+            GTEST_SKIP() << "no X server could start (xvfb-run -a true failed)";
+        }
+    }
+};
+
+TEST_F(GuiSmokeTest, ScriptedEditSwitchUndoAndSave) {
+    fs::path dir = runScript("gui_smoke", kScript);
+    ASSERT_FALSE(HasFailure());
 
     image::Image before = image::readImage(dir / "before.png");
     image::Image edited = image::readImage(dir / "edited.png");
@@ -135,6 +150,37 @@ TEST(GuiSmokeTest, ScriptedEditSwitchUndoAndSave) {
     findNode(expected.root, {0, 0})->set("material", std::string("blue"));
     EXPECT_EQ(scene::loadSceneFile(dir / "saved.json"), expected);
     EXPECT_FALSE(fs::exists(dir / "state/sdf-workbench/autosave.json")) << "a scripted run must not autosave";
+}
+
+constexpr const char* kPolynomialScript = R"(# the Polynomial window: implicitize, add the surface, save
+set render.aa 1
+wait idle
+screenshot before.png
+polynomial open
+polynomial equations x = u*v; y = v; z = u^2
+polynomial range u -0.8 0.8
+polynomial run
+polynomial add
+polynomial close
+wait idle
+screenshot added.png
+save saved.json
+quit
+)";
+
+TEST_F(GuiSmokeTest, PolynomialWindowAddsTheImplicitSurface) {
+    fs::path dir = runScript("gui_smoke_polynomial", kPolynomialScript);
+    ASSERT_FALSE(HasFailure());
+    double change = meanDifference(image::readImage(dir / "before.png"), image::readImage(dir / "added.png"));
+    std::cout << "viewport mean difference after adding the Whitney umbrella (levels): " << change << "\n";
+    EXPECT_GT(change, 1.0) << "the added surface does not show";
+    scene::Scene saved = scene::loadSceneFile(dir / "saved.json");
+    ASSERT_FALSE(saved.root.children.empty());
+    const scene::Node& added = saved.root.children.back();
+    EXPECT_EQ(added.kind, scene::NodeKind::Polynomial);
+    EXPECT_EQ(added.text("formula"), "y^2*z - x^2");
+    // u in [-0.8, 0.8] and v in [-1, 1]: x = u*v within 0.8, padded by 5 %
+    EXPECT_NEAR(added.vec3("bounds_max").x, 0.88, 1e-9);
 }
 
 }  // namespace
