@@ -77,6 +77,8 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
     keyGate.onKey(window, key, scancode, action, mods);
 }
 
+void onChar(GLFWwindow* window, unsigned int codepoint) { keyGate.onChar(window, codepoint); }
+
 void setUpStyle(float scale) {
     ImGui::StyleColorsDark();
     ImGuiStyle& style = ImGui::GetStyle();
@@ -214,7 +216,7 @@ int runGui(const GuiArguments& arguments) {
         glfwGetWindowContentScale(window, &scaleX, &scaleY);
         setUpStyle(std::max(1.0f, scaleY));
         ImGui_ImplGlfw_InitForOpenGL(window, true);
-        keyGate.setNext(glfwSetKeyCallback(window, onKey));
+        keyGate.setNext(glfwSetKeyCallback(window, onKey), glfwSetCharCallback(window, onChar));
         ImGui_ImplOpenGL3_Init("#version 330 core");
 
         AppState app;

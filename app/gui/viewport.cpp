@@ -81,8 +81,8 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
     }
     if (useGl_) updateGl(budgetSeconds);
     if (useGl_ && !compare_ && glStage_ == 0 && glWaiting_ && !cpuFallback_) {
+        // the last GL image stays up until the CPU's first stage replaces it
         cpuFallback_ = true;
-        glShown_ = false;
         cpuTexture_.resize(width_, height_);
     }
     if (cpuFallback_ && glStage_ > 0 && error_.empty()) {  // the GL image is complete: it takes over
@@ -170,6 +170,7 @@ void Viewport::updateCpu() {
         const Stage& stage = stages_[cpuStage_];
         gl::TileRect all{0, 0, result.frame.color.width, result.frame.color.height};
         cpuTexture_.upload(result.frame, all, stage.scale, heat_, scene_.render.maxSteps);
+        if (cpuFallback_) glShown_ = false;
         finishStage(result.frame, result.seconds, stage, false);
         ++cpuStage_;
         cpuSubmitted_ = false;
