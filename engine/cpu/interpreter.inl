@@ -59,8 +59,7 @@ inline Sample mapProgram(const program::Program& program, const vec4* params, Sc
             break;
         case Opcode::ImplicitFormula: {
             std::span<const real> v = scratch.formula(in.variant, p);
-            samples[in.dst] = shapeSample(instImplicit(p, vec4(v[0], v[1], v[2], v[3]), q[0], q[1]),
-                                     materialAtSlot(params, in.material));
+            samples[in.dst] = instImplicit(p, vec4(v[0], v[1], v[2], v[3]), q[0], q[1], materialAtSlot(params, in.material));
             break;
         }
         case Opcode::Union: samples[in.dst] = instUnion(samples[in.a], samples[in.b]); break;

@@ -106,8 +106,8 @@ void emitInstruction(std::ostringstream& out, const Instruction& in) {
         return;
     }
     if (in.op == program::Opcode::ImplicitFormula) {
-        out << "    " << sample(in.dst) << " = shapeSample(" << fn << "(" << point(in.a) << ", "
-            << formulaName(in.variant) << "(" << point(in.a) << ")" << slots(in) << "), M(" << in.material << "));\n";
+        out << "    " << sample(in.dst) << " = " << fn << "(" << point(in.a) << ", " << formulaName(in.variant) << "("
+            << point(in.a) << ")" << slots(in) << ", M(" << in.material << "));\n";
         return;
     }
     switch (info.opClass) {

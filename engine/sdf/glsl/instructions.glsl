@@ -40,21 +40,28 @@ SHARED_FN real instSdfFormula(real value) { return value; }
 // step: the bound is only local, overshooting far from the surface and useless
 // where grad F vanishes. q0 = (box centre, max step), q1 = (box half extents,
 // half the sheet thickness).
-SHARED_FN real instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1) {
+SHARED_FN Sample instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1, Material material) {
     real box = sdBox(p - xyz(q0), xyz(q1));
     real gradientLength = length3(vec3(v.y, v.z, v.w));
-    real ratio = q0.w;  // grad F = 0 off the surface: a step of max_step
-    if (gradientLength > real(0)) {
-        ratio = abs(v.x) / gradientLength;
-    }
-    // q1.w > 0: a sheet of that half-thickness h around F = 0, else the solid
-    // F <= 0. A step that overshoots F = 0 lands inside the solid, but can
-    // jump over a sheet: sheet steps stop at 2h, the sheet's thickness.
     if (q1.w > real(0)) {
-        return max(box, min(ratio - q1.w, min(q0.w, real(2) * q1.w)));
+        // A sheet of half-thickness h = q1.w around F = 0 (where grad F = 0,
+        // off the surface, it takes a step of max_step). A step that
+        // overshoots F = 0 lands inside a solid, but can jump over a sheet:
+        // steps stop at max_step and at 2h, the sheet's thickness. The
+        // distance is not capped, so max_step < h leaves the sheet as it is,
+        // and ambient occlusion and penumbrae see the bound itself.
+        real d = q0.w;
+        if (gradientLength > real(0)) {
+            d = abs(v.x) / gradientLength - q1.w;
+        }
+        d = max(box, d);
+        return Sample(d, max(box, min(d, min(q0.w, real(2) * q1.w))), material);
     }
-    real bound = min(ratio, q0.w);
-    return max(box, v.x < real(0) ? -bound : bound);
+    real bound = q0.w;  // grad F = 0 off the surface: a step of max_step
+    if (gradientLength > real(0)) {
+        bound = min(abs(v.x) / gradientLength, q0.w);
+    }
+    return shapeSample(max(box, v.x < real(0) ? -bound : bound), material);
 }
 
 // The ground plane y = height, in march coordinates: q0 = (height - eye.y, pattern),

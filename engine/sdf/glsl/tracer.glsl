@@ -195,11 +195,13 @@ SHARED_FN bool convergesWithin(TraceState s, Sample field, TraceSettings setting
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
     s.steps = s.steps + 1;
     real epsilon = hitEpsilonAt(settings, s.t);
-    if (field.d < -epsilon && s.t > real(0) && s.steps < settings.maxSteps) {
+    if (field.d < -epsilon && field.step < real(0) && s.t > real(0) && s.steps < settings.maxSteps) {
         // A bound such as |F| / |grad F| can exceed the distance, so a step
         // can end inside the solid; a hit there would start its shadow rays
-        // inside too (black spots). Back out by the same bound, which from
-        // inside never leaves the solid for an exact field, until |d| < epsilon.
+        // inside too (black spots). Back out by the safe step (negative
+        // inside), which from inside never leaves the solid for an exact
+        // field, until d >= -epsilon. (A displacement's step can have the
+        // other sign than its distance: then the point is taken as it is.)
         s.t = max(s.t + field.step, real(0));
         s.lastDistance = field.d;
         return s;
