@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/panel_widgets.h"
 #include "ui/panels.h"
 
 namespace sdfwb::ui {
@@ -18,19 +19,6 @@ std::string tryFormulaText(Editor& editor, const NodePath& path, const scene::Fi
     for (const std::string& problem : problems) joined += (joined.empty() ? "" : "\n") + problem;
     return joined;
 }
-
-namespace {
-
-const ImU32 kErrorColour = IM_COL32(255, 110, 100, 255);
-
-void showProblem(const std::string& reason) {
-    if (reason.empty()) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
-    ImGui::TextWrapped("%s", reason.c_str());
-    ImGui::PopStyleColor();
-}
-
-}  // namespace
 
 const scene::FieldSpec* formulaField(const scene::KindSpec& kind) {
     for (const scene::FieldSpec& field : kind.fields) {
@@ -53,7 +41,7 @@ void drawFormulaField(Editor& editor, UiState& ui, const NodePath& path, const s
     std::string reason = tryFormulaText(editor, path, field, text, key);
     // the draft's problem belongs under the box, not in the log every frame
     ui.inspectorProblems.clear();
-    showProblem(reason);
+    problemText(reason);
 }
 
 Problems addFormulaNode(Editor& editor, const scene::KindSpec& kind, const std::string& formula) {
@@ -74,9 +62,12 @@ void drawAddFormulaMenu(Editor& editor, UiState& ui, const scene::KindSpec& kind
                                                  : "F(x, y, z), zero on the surface, negative inside");
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(360);
-    bool entered = ImGui::InputText("##formula", &draft->second, ImGuiInputTextFlags_EnterReturnsTrue);
+    // every kind's submenu is the same ImGui window: the label keeps their
+    // text boxes (cursor, undo) apart
+    std::string label = "##formula " + name;
+    bool entered = ImGui::InputText(label.c_str(), &draft->second, ImGuiInputTextFlags_EnterReturnsTrue);
     std::string reason = scene::checkField(*formulaField(kind), draft->second);
-    showProblem(reason);
+    problemText(reason);
     ImGui::BeginDisabled(!reason.empty());
     bool pressed = ImGui::Button(("Add " + name).c_str());
     ImGui::EndDisabled();

@@ -35,6 +35,9 @@ DragRange dragRangeFor(const FieldSpec& field) {
     case Range::OpenAngle90: return {0.25, 0.5, 89.5};
     case Range::Any:
     case Range::NonZeroVector: return {speed, -kHuge, kHuge};
+    case Range::SdfFormula:
+    case Range::ImplicitFormula:
+    case Range::PolynomialFormula: break;  // text fields: never dragged
     }
     return {speed, -kHuge, kHuge};
 }
@@ -165,11 +168,7 @@ void drawInspector(Editor& editor, UiState& ui) {
         ImGui::TextDisabled("%zu child%s%s", node->children.size(), node->children.size() == 1 ? "" : "ren",
                             folded ? ", folded in child order (drag to reorder)" : "");
     }
-    for (const std::string& problem : ui.inspectorProblems) {
-        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
-        ImGui::TextWrapped("%s", problem.c_str());
-        ImGui::PopStyleColor();
-    }
+    for (const std::string& problem : ui.inspectorProblems) problemText(problem);
 }
 
 }  // namespace sdfwb::ui

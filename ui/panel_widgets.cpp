@@ -53,4 +53,11 @@ void reportProblems(UiState& ui, const Problems& problems) {
     }
 }
 
+void problemText(const std::string& problem) {
+    if (problem.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
+    ImGui::TextWrapped("%s", problem.c_str());
+    ImGui::PopStyleColor();
+}
+
 }  // namespace sdfwb::ui

@@ -24,6 +24,10 @@ WidgetEdit dragVec3(const char* label, glm::dvec3& value, double speed, double m
                     const char* format = "%.3f");
 WidgetEdit colorEdit(const char* label, glm::dvec3& value);
 
+// A refused value or formula, wrapped, in the error colour under the widget
+// it belongs to (nothing when `problem` is empty).
+void problemText(const std::string& problem);
+
 // Commits a scene change made by a widget: merges while the widget stays
 // active (key = the widget's id), reports refused edits, ends the merge when
 // the widget is released.

@@ -67,14 +67,16 @@ std::vector<ParameterRange> parameterRanges(std::string_view equations, std::spa
     expr::TrigConversion conversion = expr::toRationalParametrization(parsed, expr::TrigStrategy::CosSinRelation);
     std::vector<ParameterRange> ranges;
     for (const std::string& name : parsed.graph.variables()) {
-        bool angle = std::any_of(conversion.angles.begin(), conversion.angles.end(),
-                                 [&](const expr::AngleSubstitution& a) { return a.parameter == name; });
+        auto angle = std::find_if(conversion.angles.begin(), conversion.angles.end(),
+                                  [&](const expr::AngleSubstitution& a) { return a.parameter == name; });
+        bool isAngle = angle != conversion.angles.end();
         auto kept = std::find_if(previous.begin(), previous.end(),
-                                 [&](const ParameterRange& r) { return r.name == name && r.angle == angle; });
+                                 [&](const ParameterRange& r) { return r.name == name && r.angle == isAngle; });
         if (kept != previous.end()) {
             ranges.push_back(*kept);
-        } else if (angle) {
-            ranges.push_back({name, 0, 2 * std::numbers::pi, true});
+        } else if (isAngle) {
+            // parameter = scale * psi with psi a full turn: one whole period
+            ranges.push_back({name, 0, 2 * std::numbers::pi * std::abs(angle->scale.get_d()), true});
         } else {
             ranges.push_back({name});
         }

@@ -106,7 +106,8 @@ PolynomialOutcome computePolynomial(const PolynomialRequest& request, const alge
 
 // The parameters of `equations` in order of first use, each with its range
 // from `previous` when listed there with the same role (angle or not), else
-// [0, 2π] for an angle and [-1, 1] for any other. Throws what Run would
+// one whole period for an angle ([0, 2π] for cos(u), [0, 4π] for cos(u/2))
+// and [-1, 1] for any other. Throws what Run would
 // report for equations that cannot be implicitized (expr::Error with a column).
 std::vector<ParameterRange> parameterRanges(std::string_view equations, std::span<const ParameterRange> previous = {});
 

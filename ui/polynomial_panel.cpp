@@ -7,18 +7,11 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/panel_widgets.h"
 #include "ui/panels.h"
 
 namespace sdfwb::ui {
 namespace {
-
-const ImU32 kErrorColour = IM_COL32(255, 110, 100, 255);
-
-void showProblem(const std::string& problem) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
-    ImGui::TextWrapped("%s", problem.c_str());
-    ImGui::PopStyleColor();
-}
 
 void orderCombo(algebra::EliminationOrder& order) {
     std::span<const algebra::EliminationOrderName> orders = algebra::elimination_orders();
@@ -36,6 +29,8 @@ void orderCombo(algebra::EliminationOrder& order) {
 
 void rangeWidgets(PolynomialPanelState& state) {
     ImGui::Checkbox("bounds from the parameter ranges", &state.boundsFromRanges);
+    // the ranges belong to the last equations that could run
+    if (!state.problem.empty()) return;
     ImGui::BeginDisabled(!state.boundsFromRanges);
     for (ParameterRange& range : state.ranges) {
         ImGui::SetNextItemWidth(200);
@@ -57,7 +52,7 @@ void requestWidgets(PolynomialPanelState& state) {
     ImGui::PopStyleColor();
     ImGui::InputTextMultiline("##equations", &r.equations, ImVec2(-1, ImGui::GetTextLineHeight() * 4 + 8));
     readParameters(state);
-    if (!state.problem.empty()) showProblem(state.problem);
+    problemText(state.problem);
     orderCombo(r.order);
     int trig = r.trig == expr::TrigStrategy::CosSinRelation ? 0 : 1;
     ImGui::RadioButton("cos-sin variables", &trig, 0);
@@ -73,7 +68,7 @@ void requestWidgets(PolynomialPanelState& state) {
 void outcomeWidgets(Editor& editor, UiState& ui, PolynomialPanelState& state, const PolynomialOutcome& outcome) {
     ImGui::Separator();
     if (!outcome.ok) {
-        showProblem(outcome.message);
+        problemText(outcome.message);
         return;
     }
     ImGui::TextUnformatted(outcome.message.c_str());
@@ -100,7 +95,7 @@ void readParameters(PolynomialPanelState& state) {
     if (state.request.equations == state.readEquations) return;
     state.readEquations = state.request.equations;
     try {
-        state.ranges = parameterRanges(state.readEquations, state.ranges);
+        state.ranges = parameterRanges(*state.readEquations, state.ranges);
         state.problem.clear();
     } catch (const std::exception& error) {
         state.problem = error.what();

@@ -4,6 +4,10 @@
 // a Cancel button, and the resulting equation is added to the scene as a
 // `polynomial` node through the Editor (one undo step).
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "ui/editor.h"
 #include "ui/polynomial_job.h"
 #include "ui/ui_state.h"
@@ -17,7 +21,7 @@ struct PolynomialPanelState {
     PolynomialRequest request;
     bool boundsFromRanges = true;        // else the node's default bounds
     std::vector<ParameterRange> ranges;  // of the equations as last read
-    std::string readEquations;           // the text `ranges` and `problem` describe
+    std::optional<std::string> readEquations;  // the text `ranges` and `problem` describe
     std::string problem;                 // why those equations cannot run, "" when they can
     double sheetThickness = 0;           // of the node added: 0 the solid F <= 0, else a sheet
     PolynomialJob job;

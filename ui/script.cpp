@@ -347,6 +347,7 @@ ScriptStatus ScriptRunner::runPolynomial(const ScriptCommand& c, Editor& editor,
     }
     if (action == "range" && arguments(3)) {
         readParameters(panel);
+        if (!panel.problem.empty()) return fail(c, panel.problem);
         double from = 0, to = 0;
         if (!parseNumber(a[2], from) || !parseNumber(a[3], to)) return fail(c, "the range must be two numbers");
         for (ParameterRange& range : panel.ranges) {

@@ -20,7 +20,7 @@ struct RenderControl {
     Precision precision = Precision::Float;
     const std::atomic<bool>* cancel = nullptr;  // checked before each tile
     // Called after each tile from worker threads (serialised by the renderer).
-    std::function<void(int tilesDone, int tilesTotal)> progress;
+    std::function<void(int tilesDone, int tilesTotal)> progress = {};
 };
 
 struct RenderOutcome {

@@ -32,7 +32,7 @@ struct GlCounters {
 struct GlRenderControl {
     int tileSize = 256;  // pixels per side of one draw call
     const std::atomic<bool>* cancel = nullptr;  // checked between draws
-    std::function<void(int drawsDone, int drawsTotal)> progress;
+    std::function<void(int drawsDone, int drawsTotal)> progress = {};
 };
 
 struct GlRenderOutcome {

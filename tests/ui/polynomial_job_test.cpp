@@ -68,6 +68,9 @@ TEST(PolynomialJob, ParametersGetRangesByKind) {
     EXPECT_EQ(ranges[2], (ParameterRange{"w", -1, 1}));
     EXPECT_DOUBLE_EQ(ranges[0].max, 2 * std::numbers::pi);
     EXPECT_DOUBLE_EQ(ranges[1].min, 0);
+    // the Moebius strip's cos(u/2) repeats after 4π
+    std::vector<ParameterRange> half = parameterRanges("x = cos(u/2); y = sin(u); z = v");
+    EXPECT_DOUBLE_EQ(half[0].max, 4 * std::numbers::pi);
     // a range the user gave is kept while its parameter stays, in the same role
     std::vector<ParameterRange> edited{{"w", 0, 3}, {"gone", 5, 6}, {"u", 0, 1, true}, {"v", 2, 3}};
     std::vector<ParameterRange> kept = parameterRanges("x = w; y = w^2 + u; z = t*cos(v)", edited);

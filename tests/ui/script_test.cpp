@@ -191,11 +191,12 @@ TEST(ScriptRunTest, PolynomialCommandsImplicitizeAndAddTheSurface) {
 }
 
 TEST(ScriptRunTest, PolynomialCommandErrorsNameTheLine) {
-    FakeHost host;
     Editor editor;
     UiState ui;
-    host.editor = &editor;
+    // each script on a fresh window, with the default equations
     auto failure = [&](const std::string& script) {
+        FakeHost host;
+        host.editor = &editor;
         ScriptRunner runner(parseScript(script, "s"), "s");
         EXPECT_EQ(runUntilDone(runner, editor, ui, host), ScriptStatus::Failed);
         return runner.error();
@@ -204,7 +205,12 @@ TEST(ScriptRunTest, PolynomialCommandErrorsNameTheLine) {
               "s:2: polynomial: column 12: 'sqrt' is not a polynomial or rational function");
     EXPECT_EQ(failure("polynomial equations x = t; y = t^2; z = t^3\npolynomial range s 0 1\n"),
               "s:2: polynomial: the equations have no parameter \"s\"");
-    EXPECT_EQ(failure("polynomial run\npolynomial add\n").rfind("s:2: polynomial: no surface to add", 0), 0u);
+    EXPECT_EQ(failure("polynomial add\n").rfind("s:1: polynomial: no surface to add", 0), 0u);
+    EXPECT_EQ(failure("polynomial equations x = t; y = t^2; z = t^3\npolynomial run\npolynomial add\n")
+                  .rfind("s:3: polynomial: no surface to add", 0),
+              0u);
+    EXPECT_EQ(failure("polynomial equations x = sqrt(t); y = t; z = t\npolynomial range t 0 1\n"),
+              "s:2: polynomial: column 5: 'sqrt' is not a polynomial or rational function");
     EXPECT_EQ(failure("polynomial order revlex\n").rfind("s:1: polynomial: unknown order \"revlex\"", 0), 0u);
     EXPECT_TRUE(editor.scene().root.children.empty());
 }
