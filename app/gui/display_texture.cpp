@@ -18,13 +18,32 @@ DisplayTexture::DisplayTexture(const glcontext::GlFunctions& gl) : gl_(gl), text
 
 void DisplayTexture::resize(int width, int height) {
     if (width == width_ && height == height_) return;
+    std::vector<std::uint8_t> start = stretched(width, height);
     width_ = width;
     height_ = height;
-    std::vector<std::uint8_t> black(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0);
     gl_.BindTexture(GL_TEXTURE_2D, texture_.get());
     gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, width, height, 0, GL_RGB, GL_UNSIGNED_BYTE, black.data());
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, width, height, 0, GL_RGB, GL_UNSIGNED_BYTE, start.data());
     gl_.BindTexture(GL_TEXTURE_2D, 0);
+}
+
+std::vector<std::uint8_t> DisplayTexture::stretched(int width, int height) const {
+    std::vector<std::uint8_t> out(static_cast<size_t>(width) * static_cast<size_t>(height) * 3, 0);
+    if (width_ == 0 || height_ == 0) return out;  // nothing yet: black
+    std::vector<std::uint8_t> old(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 3);
+    gl_.BindTexture(GL_TEXTURE_2D, texture_.get());
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.GetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_BYTE, old.data());
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    for (int y = 0; y < height; ++y) {
+        size_t from = static_cast<size_t>(y * height_ / height) * static_cast<size_t>(width_);
+        for (int x = 0; x < width; ++x) {
+            size_t s = (from + static_cast<size_t>(x * width_ / width)) * 3;
+            std::copy_n(old.begin() + static_cast<long>(s), 3,
+                        out.begin() + static_cast<long>((static_cast<size_t>(y) * static_cast<size_t>(width) + x) * 3));
+        }
+    }
+    return out;
 }
 
 image::Frame cropFrame(const image::Frame& frame, const gl::TileRect& rect) {

@@ -3,6 +3,9 @@
 // through image::encodeSrgb8, the encoding image files use, so the viewport
 // shows what a snapshot writes.
 
+#include <cstdint>
+#include <vector>
+
 #include "gl/progressive_render.h"
 #include "glcontext/gl_object.h"
 #include "image/image.h"
@@ -13,7 +16,8 @@ class DisplayTexture {
 public:
     explicit DisplayTexture(const glcontext::GlFunctions& gl);
 
-    // Reallocates (contents undefined until uploaded) when the size differs.
+    // Reallocates when the size differs, starting from the old image
+    // stretched to the new size (not black while the new one renders).
     void resize(int width, int height);
     // Uploads `rect` of `frame`, each pixel repeated `scale` x `scale` times
     // (a reduced-resolution preview fills the full-size texture). With
@@ -27,6 +31,10 @@ public:
     int height() const { return height_; }
 
 private:
+    // The current contents resized (nearest pixel) to width x height; black
+    // before the first allocation.
+    std::vector<std::uint8_t> stretched(int width, int height) const;
+
     const glcontext::GlFunctions& gl_;
     glcontext::GlObject texture_;
     int width_ = 0, height_ = 0;
