@@ -57,7 +57,7 @@ struct TraceState {
     vec3 rayOrigin;
     vec3 rayDirection;
     real t;
-    real lastDistance;  // the previous primary-march distance (0 before the first)
+    real lastDistance;  // the previous distance of the current march (0 before the first)
     vec3 hitPoint;
     real hitEpsilon;
     Material material;
@@ -142,6 +142,7 @@ SHARED_FN vec3 reflectedRadiance(Material m, vec3 normal, vec3 toViewer, Light l
 SHARED_FN TraceState beginLight(TraceState s, TraceSettings settings) {
     s.shadowT = real(0);
     s.shadowResult = real(1);
+    s.lastDistance = real(0);
     s.counter = 0;
     if (s.light >= settings.lightCount) {
         s.phase = PHASE_DONE;
@@ -183,13 +184,14 @@ SHARED_FN TraceState beginOcclusion(TraceState s, TraceSettings settings) {
 // Out of steps, a ray that grazes a surface (a floor towards the horizon) is
 // still closing in on it: its distances shrink geometrically with ratio
 // q = d_n / d_(n-1), so it would arrive after about step / (1 - q) more. It
-// counts as a hit when that lands within max distance.
-SHARED_FN bool convergesWithin(TraceState s, Sample field, TraceSettings settings) {
-    if (!(s.lastDistance > real(0)) || !(field.d < s.lastDistance)) {
+// counts as a hit when that lands within max distance. (Primary rays at t,
+// shadow rays at shadowT: both keep their previous distance in lastDistance.)
+SHARED_FN bool convergesWithin(real t, real lastDistance, Sample field, TraceSettings settings) {
+    if (!(lastDistance > real(0)) || !(field.d < lastDistance)) {
         return false;
     }
-    real ratio = field.d / s.lastDistance;
-    return s.t + field.step / (real(1) - ratio) <= settings.maxDistance;
+    real ratio = field.d / lastDistance;
+    return t + field.step / (real(1) - ratio) <= settings.maxDistance;
 }
 
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
@@ -206,7 +208,7 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         s.lastDistance = field.d;
         return s;
     }
-    if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s, field, settings))) {
+    if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s.t, s.lastDistance, field, settings))) {
         s.hit = true;
         s.hitPoint = s.rayOrigin + s.rayDirection * s.t;
         s.hitEpsilon = epsilon;
@@ -267,13 +269,16 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
         }
         return s;
     }
-    if (d < s.hitEpsilon) {
+    // out of steps while still closing in on an occluder: blocked, as for
+    // primary rays (counting it lit let light leak into grazing shadows)
+    if (d < s.hitEpsilon || (exhausted && convergesWithin(s.shadowT, s.lastDistance, field, settings))) {
         return finishLight(s, light, settings, real(0));
     }
     if (settings.shadowMode == SHADOW_SOFT && s.shadowT > real(0)) {
         s.shadowResult = min(s.shadowResult, light.softness * d / s.shadowT);
     }
     s.shadowT = s.shadowT + max(field.step, real(0.25) * s.hitEpsilon);
+    s.lastDistance = d;
     if (s.shadowT > settings.maxDistance || exhausted) {
         return finishLight(s, light, settings, saturate(s.shadowResult));
     }
