@@ -44,7 +44,7 @@ struct PolynomialRequest {
 struct PolynomialOutcome {
     bool ok = false;
     // ok: a summary ("degree 3, 4 terms, 0.002 s"); else the parse error or
-    // "gave up after ..." / "cancelled" message, one line.
+    // "gave up after ..." / "cancelled after ..." message, one line.
     std::string message;
     // The generators as the formula language reads them (Polynomial::to_string).
     std::vector<std::string> generators;

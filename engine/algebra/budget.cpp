@@ -94,9 +94,12 @@ void BudgetMonitor::check(const Progress& state, std::size_t own_bytes) {
     std::string where = "(" + (*state.stage ? std::string(state.stage) + ", " : std::string()) + "basis " +
                         std::to_string(state.basis_size) + ", " + std::to_string(state.pairs_left) +
                         " pairs left)";
-    throw BudgetExceeded{status, "gave up after " + format_seconds(elapsed) + ": " + reason + " " + where};
+    // a cancel is the caller's doing, not the engine giving up
+    std::string head = status == Status::cancelled ? "cancelled after " + format_seconds(elapsed)
+                                                   : "gave up after " + format_seconds(elapsed) + ": " + reason;
+    throw BudgetExceeded{status, head + " " + where};
   };
-  if (budget_.cancel && budget_.cancel->cancelled()) give_up(Status::cancelled, "cancelled");
+  if (budget_.cancel && budget_.cancel->cancelled()) give_up(Status::cancelled, {});
   if (budget_.time_limit_seconds && elapsed > *budget_.time_limit_seconds) {
     give_up(Status::time_limit, "time limit of " + format_seconds(*budget_.time_limit_seconds) + " reached");
   }

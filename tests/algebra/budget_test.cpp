@@ -47,7 +47,7 @@ TEST(Budget, CancelledBeforeStart) {
   options.budget.cancel = token;
   GroebnerResult r = groebner_basis(testing::katsura(3), options);
   EXPECT_EQ(r.status, Status::cancelled);
-  EXPECT_EQ(r.message.rfind("gave up after ", 0), 0u) << r.message;
+  EXPECT_EQ(r.message.rfind("cancelled after ", 0), 0u) << r.message;
 }
 
 TEST(Budget, CancelledFromAnotherThread) {

@@ -56,7 +56,7 @@ Outcome lift_cancelled_at(const std::vector<Polynomial>& input, std::size_t canc
 void expect_cancelled_while_lifting(const Outcome& outcome, std::size_t bases) {
   ASSERT_TRUE(outcome.exceeded.has_value()) << "the lift ran to the end";
   EXPECT_EQ(outcome.exceeded->status, Status::cancelled);
-  EXPECT_EQ(outcome.exceeded->message.rfind("gave up after ", 0), 0u) << outcome.exceeded->message;
+  EXPECT_EQ(outcome.exceeded->message.rfind("cancelled after ", 0), 0u) << outcome.exceeded->message;
   EXPECT_NE(outcome.exceeded->message.find("(lifting, "), std::string::npos) << outcome.exceeded->message;
   EXPECT_EQ(outcome.bases, bases);
   EXPECT_EQ(outcome.verifications, 0u);
