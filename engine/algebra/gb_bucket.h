@@ -50,7 +50,7 @@ class Bucket {
     product.mons.resize((p.size() - from) * stride);
     product.coeffs.resize(p.size() - from);
     for (std::size_t i = from; i < p.size(); ++i) {
-      layout_.multiply(&product.mons[(i - from) * stride], p.mon(i, stride), shift);
+      layout_.multiply(product.mons.data() + (i - from) * stride, p.mon(i, stride), shift);
       domain_.mul(product.coeffs[i - from], p.coeffs[i], factor);
     }
     add(std::move(product));

@@ -11,7 +11,7 @@ IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* de
   out.coeffs.resize(p.term_count());
   for (std::size_t i = 0; i < p.term_count(); ++i) {
     const Term& t = p.terms()[i];
-    Word* m = &out.mons[i * stride];
+    Word* m = out.mons.data() + i * stride;
     for (std::size_t v = 0; v < layout.vars(); ++v) m[layout.keys() + v] = static_cast<Word>(t.monomial[v]);
     layout.encode_keys(m);
     mpz_divexact(out.coeffs[i].get_mpz_t(), den.get_mpz_t(), t.coefficient.get_den_mpz_t());

@@ -134,13 +134,13 @@ void Engine<D>::insert(P h) {
   std::vector<Word> lcms(m * stride);
   std::vector<char> coprime(m), keep(m, 1);
   for (std::size_t a = 0; a < m; ++a) {
-    layout_.lcm(&lcms[a * stride], lead(reducers_[a]), lead_k);
+    layout_.lcm(lcms.data() + a * stride, lead(reducers_[a]), lead_k);
     coprime[a] = layout_.coprime(lead(reducers_[a]), lead_k);
   }
   for (std::size_t a = 0; a < m; ++a) {  // M: an lcm properly divisible by another's
     for (std::size_t b = 0; b < m; ++b) {
-      if (b == a || !layout_.divides(&lcms[b * stride], &lcms[a * stride])) continue;
-      if (!layout_.equal(&lcms[b * stride], &lcms[a * stride])) {
+      if (b == a || !layout_.divides(lcms.data() + b * stride, lcms.data() + a * stride)) continue;
+      if (!layout_.equal(lcms.data() + b * stride, lcms.data() + a * stride)) {
         keep[a] = 0;
         ++stats_.chain_criterion;
         break;
@@ -150,7 +150,7 @@ void Engine<D>::insert(P h) {
   for (std::size_t a = 0; a < m; ++a) {  // F: one pair per lcm; none if one of them is coprime
     if (!keep[a]) continue;
     for (std::size_t b = a + 1; b < m; ++b) {
-      if (keep[b] && layout_.equal(&lcms[a * stride], &lcms[b * stride])) {
+      if (keep[b] && layout_.equal(lcms.data() + a * stride, lcms.data() + b * stride)) {
         coprime[a] = coprime[a] || coprime[b];
         keep[b] = 0;
         ++stats_.chain_criterion;
@@ -186,12 +186,12 @@ void Engine<D>::insert(P h) {
     const std::uint32_t i = reducers_[a];
     const std::uint32_t sugar_i = basis_[i].poly.sugar;
     const std::uint32_t degree_i = layout_.sugar_degree(lead(i));
-    const std::uint32_t degree_l = layout_.sugar_degree(&lcms[a * stride]);
+    const std::uint32_t degree_l = layout_.sugar_degree(lcms.data() + a * stride);
     // Sugar bounds the degree, so sugar >= degree of the leading monomial;
     // signed arithmetic keeps a violation from wrapping around.
     const std::int64_t ecart = std::max<std::int64_t>(std::int64_t{sugar_i} - degree_i, std::int64_t{sugar_k} - degree_k);
     const auto sugar = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ecart) + degree_l);
-    push_pair(i, k, sugar, &lcms[a * stride]);
+    push_pair(i, k, sugar, lcms.data() + a * stride);
   }
 
   // Elements whose leading monomial lt(k) divides are no longer needed,
