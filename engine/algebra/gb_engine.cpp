@@ -107,6 +107,22 @@ bool Engine<D>::pair_before(std::uint32_t a, std::uint32_t b) const {
 }
 
 template <class D>
+std::optional<typename Engine<D>::Pair> Engine<D>::next_pair(const char* stage) {
+  const auto later = [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); };
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    Pair pair = pairs_[heap_.back()];
+    heap_.pop_back();
+    if (!pair.alive) continue;
+    --live_pairs_;
+    monitor_.check(progress(stage), own_bytes());
+    ++stats_.pairs_treated;
+    return pair;
+  }
+  return std::nullopt;
+}
+
+template <class D>
 void Engine<D>::push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm) {
   Pair pair{i, j, sugar, lcm_store_.size()};
   lcm_store_.insert(lcm_store_.end(), lcm, lcm + layout_.stride());
@@ -277,15 +293,8 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input, Tra
   for (std::uint32_t g = 0; g < generators_.size(); ++g) {
     push_pair(g, kGenerator, generators_[g].sugar, generators_[g].mons.data());
   }
-  const auto later = [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); };
-  while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), later);
-    Pair pair = pairs_[heap_.back()];
-    heap_.pop_back();
-    if (!pair.alive) continue;
-    --live_pairs_;
-    monitor_.check(progress("buchberger"), own_bytes());
-    ++stats_.pairs_treated;
+  while (std::optional<Pair> next = next_pair("buchberger")) {
+    const Pair& pair = *next;
     bucket_.clear();
     if (pair.j == kGenerator) {
       P copy = generators_[pair.i];
@@ -366,17 +375,9 @@ bool Engine<D>::is_groebner(std::vector<P> basis) {
     g.sugar = degree;
     insert(std::move(g));
   }
-  const auto later = [this](std::uint32_t a, std::uint32_t b) { return pair_before(b, a); };
-  while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), later);
-    Pair pair = pairs_[heap_.back()];
-    heap_.pop_back();
-    if (!pair.alive) continue;
-    --live_pairs_;
-    monitor_.check(progress("verification"), own_bytes());
-    ++stats_.pairs_treated;
-    load_s_polynomial(pair.i, pair.j, pair_lcm(pair));
-    if (!reduce(P{}, pair.sugar).empty()) return false;
+  while (std::optional<Pair> pair = next_pair("verification")) {
+    load_s_polynomial(pair->i, pair->j, pair_lcm(*pair));
+    if (!reduce(P{}, pair->sugar).empty()) return false;
     ++stats_.zero_reductions;
   }
   return true;

@@ -107,6 +107,9 @@ class Engine {
   void insert(P h);
   void push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm);
   bool pair_before(std::uint32_t a, std::uint32_t b) const;
+  /// Takes the best live pair off the heap (nullopt when none is left),
+  /// counting it and checking the budget at `stage`.
+  std::optional<Pair> next_pair(const char* stage);
   void interreduce();
   Progress progress(const char* stage) const;
   std::size_t own_bytes() const;
