@@ -198,4 +198,10 @@ std::vector<NamedParametrization> classic_parametrizations() {
   return out;
 }
 
+std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
+  std::vector<std::string> out;
+  for (const Polynomial& p : polys) out.push_back(p.to_string());
+  return out;
+}
+
 }  // namespace sdfwb::algebra::testing

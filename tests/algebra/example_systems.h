@@ -34,4 +34,7 @@ struct NamedParametrization {
 /// half-angle substitution ("/half-angle").
 std::vector<NamedParametrization> classic_parametrizations();
 
+/// The polynomials as the formula language prints them, for comparisons.
+std::vector<std::string> strings(const std::vector<Polynomial>& polys);
+
 }  // namespace sdfwb::algebra::testing

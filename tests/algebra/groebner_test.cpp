@@ -2,14 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "example_systems.h"
+
 namespace sdfwb::algebra {
 namespace {
 
-std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
-  std::vector<std::string> out;
-  for (const Polynomial& p : polys) out.push_back(p.to_string());
-  return out;
-}
+using testing::strings;
 
 TEST(Groebner, CoxLittleOSheaGrlex) {
   // CLO 2.7 Example 1: <x^3 - 2xy, x^2 y - 2y^2 + x> in grlex with x > y.

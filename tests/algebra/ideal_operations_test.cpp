@@ -3,14 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include "example_systems.h"
+
 namespace sdfwb::algebra {
 namespace {
 
-std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
-  std::vector<std::string> out;
-  for (const Polynomial& p : polys) out.push_back(p.to_string());
-  return out;
-}
+using testing::strings;
 
 class IdealOperations : public ::testing::Test {
  protected:

@@ -6,14 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
+#include "example_systems.h"
+
 namespace sdfwb::algebra {
 namespace {
 
-std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
-  std::vector<std::string> out;
-  for (const Polynomial& p : polys) out.push_back(p.to_string());
-  return out;
-}
+using testing::strings;
 
 ImplicitizationResult checked(const RationalParametrization& p) {
   ImplicitizationResult r = implicitize(p);
@@ -118,15 +118,6 @@ TEST(Implicitization, RejectsMalformedInput) {
   EXPECT_THROW(implicitize({{"u"}, {"y"}, {u}, {ring->zero()}, {}}), std::invalid_argument);
 }
 
-}  // namespace
-}  // namespace sdfwb::algebra
-
-#include "example_systems.h"
-
-#include <map>
-
-namespace sdfwb::algebra {
-namespace {
 
 TEST(Implicitization, ClassicSurfacesVanishOnTheirParametrizations) {
   // Every classic surface gives one equation that vanishes exactly on the
@@ -148,11 +139,6 @@ TEST(Implicitization, ClassicSurfacesVanishOnTheirParametrizations) {
   }
 }
 
-}  // namespace
-}  // namespace sdfwb::algebra
-
-namespace sdfwb::algebra {
-namespace {
 
 RationalParametrization twisted_cubic() {
   auto t = Ring::make({"t"});

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "support/headless_imgui.h"
 #include "ui/formula_field.h"
 #include "ui/panels.h"
 
@@ -102,14 +103,7 @@ TEST(AddFormula, GoesWhereAddPutsItsKind) {
 }
 
 TEST(FormulaField, InspectorDrawsFormulaNodesWithoutEditing) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1280, 800);
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    test::HeadlessImGui imgui;
     for (scene::NodeKind kind : {scene::NodeKind::Sdf, scene::NodeKind::Implicit, scene::NodeKind::Polynomial}) {
         FormulaScene s(kind);
         s.editor.select(s.path);
@@ -125,7 +119,6 @@ TEST(FormulaField, InspectorDrawsFormulaNodesWithoutEditing) {
         EXPECT_EQ(s.editor.revision(), revision);
         EXPECT_TRUE(ui.messages.empty());
     }
-    ImGui::DestroyContext();
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "scene/scene_json.h"
+#include "support/headless_imgui.h"
 #include "ui/panels.h"
 
 namespace sdfwb::ui {
@@ -14,17 +15,7 @@ namespace {
 
 class PanelsTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1280, 800);
-        io.DeltaTime = 1.0f / 60.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-    }
-    void TearDown() override { ImGui::DestroyContext(); }
+    test::HeadlessImGui imgui;
 
     void frame(Editor& editor, UiState& ui) {
         ImGui::NewFrame();
