@@ -96,4 +96,18 @@ class BudgetMonitor {
   std::size_t primes_ = 0;
 };
 
+/// Runs `body`, which may throw BudgetExceeded, and records how it ended in
+/// `result` (status and message) with the monitor's time (seconds): how the
+/// public entry points turn the engine's exception into a Status.
+template <class Result, class Body>
+void run_within_budget(Result& result, const BudgetMonitor& monitor, Body&& body) {
+  try {
+    body();
+  } catch (const BudgetExceeded& e) {
+    result.status = e.status;
+    result.message = e.message;
+  }
+  result.seconds = monitor.elapsed_seconds();
+}
+
 }  // namespace sdfwb::algebra

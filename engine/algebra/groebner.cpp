@@ -65,7 +65,7 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
   GroebnerResult result;
   BudgetMonitor monitor(options.budget);
   if (options.method != GroebnerMethod::rational) {
-    try {
+    run_within_budget(result, monitor, [&] {
       const RingPtr& ring = ideal.ring();
       result.method = "modular";
       if (options.method == GroebnerMethod::automatic && ring->order().kind() == MonomialOrder::Kind::lex &&
@@ -88,30 +88,22 @@ GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options
       } else if (result.method == "modular") {
         result.basis = gb::modular_groebner(ideal.generators(), ring, monitor, result.stats);
       }
-    } catch (const BudgetExceeded& e) {
-      result.status = e.status;
-      result.message = e.message;
-      result.basis.clear();
-    }
-    result.seconds = monitor.elapsed_seconds();
+    });
+    if (!result.ok()) result.basis.clear();
     return result;
   }
   result.method = "rational";
   const gb::Layout layout(*ideal.ring());
   const gb::IntegerDomain domain;
   IntegerEngine engine(layout, domain, monitor);
-  try {
+  run_within_budget(result, monitor, [&] {
     std::vector<gb::IntPoly> input;
     for (const Polynomial& g : ideal.generators()) input.push_back(gb::to_integer_poly(g, layout));
     std::vector<gb::IntPoly> basis = engine.groebner(std::move(input));
     for (const gb::IntPoly& g : basis) result.basis.push_back(gb::to_polynomial(g, layout, ideal.ring(), true));
-  } catch (const BudgetExceeded& e) {
-    result.status = e.status;
-    result.message = e.message;
-    result.basis.clear();
-  }
+  });
+  if (!result.ok()) result.basis.clear();
   result.stats = engine.stats();
-  result.seconds = monitor.elapsed_seconds();
   return result;
 }
 
@@ -120,15 +112,11 @@ GroebnerResult change_order(const std::vector<Polynomial>& basis, const RingPtr&
   GroebnerResult result;
   result.method = "modular+fglm";
   BudgetMonitor monitor(options.budget);
-  try {
+  run_within_budget(result, monitor, [&] {
     std::optional<std::vector<Polynomial>> converted = gb::modular_fglm(basis, target, monitor, result.stats);
     if (!converted) throw std::invalid_argument("change_order: the ideal is not zero-dimensional");
     result.basis = std::move(*converted);
-  } catch (const BudgetExceeded& e) {
-    result.status = e.status;
-    result.message = e.message;
-  }
-  result.seconds = monitor.elapsed_seconds();
+  });
   return result;
 }
 

@@ -113,14 +113,10 @@ GroebnerResult eliminate(const Ideal& ideal, const std::vector<std::string>& var
       }
       return normal_form(f.in_ring(degrevlex), *whole).is_zero();
     };
-    try {
+    run_within_budget(result, monitor, [&] {
       result.basis = gb::modular_elimination(ideal, eliminated, remaining_ring, contains, monitor, result.stats);
-    } catch (const BudgetExceeded& e) {
-      result.status = e.status;
-      result.message = e.message;
-      result.basis.clear();
-    }
-    result.seconds = monitor.elapsed_seconds();
+    });
+    if (!result.ok()) result.basis.clear();
     return result;
   }
   std::vector<std::string> names = eliminated;

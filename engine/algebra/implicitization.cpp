@@ -192,14 +192,10 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
     // cheaply: the lifted equations are verified that way.
     BudgetMonitor monitor(options.groebner.budget);
     auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
-    try {
+    run_within_budget(result, monitor, [&] {
       generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
                                            result.stats);
-    } catch (const BudgetExceeded& e) {
-      result.status = e.status;
-      result.message = e.message;
-    }
-    result.seconds = monitor.elapsed_seconds();
+    });
   }
   if (generators.size() == 1) {
     // One equation is the same under every order, so it is normalized and
