@@ -44,6 +44,13 @@ std::vector<std::string> splitVariables(const std::string& text) {
     return names;
 }
 
+// The polynomials as a JSON array of strings in the syntax they are read in.
+nlohmann::ordered_json polynomialsJson(const std::vector<algebra::Polynomial>& polynomials) {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
+    for (const algebra::Polynomial& p : polynomials) array.push_back(p.to_string());
+    return array;
+}
+
 // Runs `body`, turning input errors into one line on stderr and exit code 2.
 template <typename Body>
 int guarded(const char* command, Body body) {
@@ -105,9 +112,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
             return 3;
         }
         if (a.json) {
-            nlohmann::ordered_json generators = nlohmann::ordered_json::array();
-            for (const algebra::Polynomial& g : result.generators) generators.push_back(g.to_string());
-            nlohmann::ordered_json out = {{"generators", generators}, {"degree", result.degree()},
+            nlohmann::ordered_json out = {{"generators", polynomialsJson(result.generators)}, {"degree", result.degree()},
                                           {"terms", result.term_count()}, {"seconds", result.seconds}};
             std::cout << out.dump() << "\n";
             return 0;
@@ -140,9 +145,8 @@ int runGroebner(const GroebnerArguments& a) {
             return 3;
         }
         if (a.json) {
-            nlohmann::ordered_json basis = nlohmann::ordered_json::array();
-            for (const algebra::Polynomial& g : result.basis) basis.push_back(g.to_string());
-            std::cout << nlohmann::ordered_json{{"basis", basis}, {"seconds", result.seconds}}.dump() << "\n";
+            nlohmann::ordered_json out = {{"basis", polynomialsJson(result.basis)}, {"seconds", result.seconds}};
+            std::cout << out.dump() << "\n";
             return 0;
         }
         for (const algebra::Polynomial& g : result.basis) std::cout << g.to_string() << "\n";
