@@ -101,7 +101,8 @@ CLI::App* addGroebnerCommand(CLI::App& app, GroebnerArguments& a) {
 
 int runImplicitize(const ImplicitizeArguments& a) {
     return guarded("implicitize", [&] {
-        expr::TrigStrategy strategy = a.trig == "cos-sin" ? expr::TrigStrategy::CosSinRelation : expr::TrigStrategy::HalfAngle;
+        expr::TrigStrategy strategy =
+            a.trig == "cos-sin" ? expr::TrigStrategy::CosSinRelation : expr::TrigStrategy::HalfAngle;
         expr::TrigConversion conversion = expr::parseParametrization(a.equations, strategy);
         algebra::ImplicitizationOptions options;
         options.groebner.budget = budget(a.timeout);
@@ -112,8 +113,10 @@ int runImplicitize(const ImplicitizeArguments& a) {
             return 3;
         }
         if (a.json) {
-            nlohmann::ordered_json out = {{"generators", polynomialsJson(result.generators)}, {"degree", result.degree()},
-                                          {"terms", result.term_count()}, {"seconds", result.seconds}};
+            nlohmann::ordered_json out = {{"generators", polynomialsJson(result.generators)},
+                                          {"degree", result.degree()},
+                                          {"terms", result.term_count()},
+                                          {"seconds", result.seconds}};
             std::cout << out.dump() << "\n";
             return 0;
         }
