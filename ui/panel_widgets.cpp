@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // GetItemID: the merge key of a drag
 
+#include "ui/long_text.h"
 #include "ui/panels.h"
 
 namespace sdfwb::ui {
@@ -56,7 +57,7 @@ void reportProblems(UiState& ui, const Problems& problems) {
 void problemText(const std::string& problem) {
     if (problem.empty()) return;
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
-    ImGui::TextWrapped("%s", problem.c_str());
+    wrappedText(problem);
     ImGui::PopStyleColor();
 }
 

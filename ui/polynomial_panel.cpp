@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/long_text.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
 
@@ -72,10 +73,9 @@ void outcomeWidgets(Editor& editor, UiState& ui, PolynomialPanelState& state, co
         return;
     }
     ImGui::TextUnformatted(outcome.message.c_str());
-    for (const std::string& g : outcome.generators) {
-        std::string line = g + " = 0";
-        ImGui::TextWrapped("%s", line.c_str());
-    }
+    std::string equations;
+    for (const std::string& g : outcome.generators) equations += (equations.empty() ? "" : "\n") + g + " = 0";
+    longTextBox("result", equations, ImGui::GetTextLineHeight() * 8, state.resultText);
     ImGui::BeginDisabled(!outcome.isSurface());
     if (ImGui::Button("Add to scene")) addPolynomialNode(editor, ui, outcome, state.sheetThickness);
     ImGui::SameLine();

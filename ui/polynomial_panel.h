@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ui/editor.h"
+#include "ui/long_text.h"
 #include "ui/polynomial_job.h"
 #include "ui/ui_state.h"
 
@@ -24,6 +25,7 @@ struct PolynomialPanelState {
     std::optional<std::string> readEquations;  // the text `ranges` and `problem` describe
     std::string problem;                 // why those equations cannot run, "" when they can
     double sheetThickness = 0;           // of the node added: 0 the solid F <= 0, else a sheet
+    LongTextBoxState resultText;         // the result's box: the path it is saved to
     PolynomialJob job;
 };
 

@@ -11,6 +11,7 @@
 
 #include "app/gui/file_actions.h"
 #include "app/gui/viewport_panel.h"
+#include "ui/long_text.h"
 #include "ui/panels.h"
 #include "ui/user_paths.h"
 
@@ -19,6 +20,7 @@ namespace {
 
 constexpr float kSideWidth = 390.0f;      // the scene tree over the inspector, right of the viewport
 constexpr float kTreeFraction = 0.46f;   // of the side column's height
+constexpr float kProgressWidth = 330.0f;  // the render progress at the status bar's right end
 constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
@@ -175,18 +177,22 @@ void statusBar(AppState& app, ImVec2 origin, float width, float height) {
         if (!app.ui.messages.empty()) {
             const ui::Message& last = app.ui.messages.back();
             bool error = last.level == ui::Message::Level::Error;
-            ImGui::TextColored(error ? ImVec4(1, 0.45f, 0.4f, 1) : ImVec4(0.75f, 0.8f, 0.85f, 1), "%s",
-                               last.text.c_str());
-            if (ImGui::IsItemHovered() && app.ui.messages.size() > 1) {
+            ImGui::PushStyleColor(ImGuiCol_Text, error ? ImVec4(1, 0.45f, 0.4f, 1) : ImVec4(0.75f, 0.8f, 0.85f, 1));
+            // clear of the progress text on the right, whatever the message's length
+            ui::oneLineText(last.text, width - kProgressWidth - 24);
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) {
                 ImGui::BeginTooltip();
                 size_t first = app.ui.messages.size() > 12 ? app.ui.messages.size() - 12 : 0;
-                for (size_t i = first; i < app.ui.messages.size(); ++i) ImGui::TextUnformatted(app.ui.messages[i].text.c_str());
+                for (size_t i = first; i < app.ui.messages.size(); ++i) {
+                    ImGui::TextUnformatted(ui::shortened(app.ui.messages[i].text, 300).c_str());
+                }
                 ImGui::EndTooltip();
             }
         } else {
             ImGui::TextDisabled("Drag in the viewport to orbit, right-drag to pan, wheel to zoom.");
         }
-        ImGui::SameLine(width - 330);
+        ImGui::SameLine(width - kProgressWidth);
         ImGui::TextDisabled("%s", app.viewport->stats().status.c_str());
     }
     ImGui::End();
