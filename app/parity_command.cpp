@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/scene_source.h"
 #include "app/size_argument.h"
 #include "glcontext/osmesa_context.h"
 #include "io/atomic_file.h"
@@ -12,21 +13,6 @@
 
 namespace sdfwb::app {
 namespace {
-
-std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths) {
-    std::vector<std::filesystem::path> files;
-    for (const std::string& path : paths) {
-        if (std::filesystem::is_directory(path)) {
-            for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
-                if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
-            }
-        } else {
-            files.emplace_back(path);
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
 
 bool isHardCase(const std::filesystem::path& file) {
     return file.parent_path().filename() == "hard";

@@ -1,5 +1,6 @@
 #include "app/scene_source.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "scene/scene_json.h"
@@ -11,6 +12,21 @@ scene::Scene loadSceneArgument(const std::string& argument) {
         return scene::parseScene(defaultSceneJson());
     }
     return scene::loadSceneFile(argument);
+}
+
+std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths) {
+    std::vector<std::filesystem::path> files;
+    for (const std::string& path : paths) {
+        if (std::filesystem::is_directory(path)) {
+            for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
+                if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+            }
+        } else {
+            files.emplace_back(path);
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 }  // namespace sdfwb::app

@@ -2,8 +2,10 @@
 // Where the command-line tools get a scene: a file, or the default scene
 // embedded in the binary (so the program works from any directory).
 
+#include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -15,5 +17,8 @@ std::string_view defaultSceneJson();
 // "" or "default" gives the embedded default scene; otherwise the file.
 // Throws scene::SceneError.
 scene::Scene loadSceneArgument(const std::string& argument);
+
+// The .json files among `paths`, folders searched recursively, sorted.
+std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths);
 
 }  // namespace sdfwb::app

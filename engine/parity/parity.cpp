@@ -1,11 +1,11 @@
 #include "parity/parity.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "cpu/cpu_renderer.h"
+#include "parity/reference_scene.h"
 #include "program/compile_scene.h"
 
 namespace sdfwb::parity {
@@ -40,11 +40,8 @@ ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer
     result.passes = image::passes(result.glVsCpu, image::kParityThresholds);
 
     if (options.reference) {
-        scene::Scene tight = scene;
-        tight.render.epsilon /= options.referenceTightening;
-        tight.render.maxSteps = std::min(8192, static_cast<int>(tight.render.maxSteps * options.referenceTightening));
-        tight.render.shadowSteps = std::min(4096, static_cast<int>(tight.render.shadowSteps * options.referenceTightening));
-        program::Program referenceProgram = program::compileScene(tight, compileOptions);
+        program::Program referenceProgram =
+            program::compileScene(referenceScene(scene, options.referenceTightening), compileOptions);
         cpu::RenderControl doublePrecision;
         doublePrecision.precision = cpu::Precision::Double;
         cpu::RenderOutcome reference = cpu::renderCpu(referenceProgram, doublePrecision);
