@@ -11,6 +11,7 @@
 #include "app/gui/gui_command.h"
 #include "app/parity_command.h"
 #include "app/render_command.h"
+#include "app/tradeoff_command.h"
 
 namespace {
 
@@ -46,6 +47,8 @@ int main(int argc, char** argv) {
     CLI::App* implicitize = sdfwb::app::addImplicitizeCommand(app, implicitizeArguments);
     sdfwb::app::GroebnerArguments groebnerArguments;
     CLI::App* groebner = sdfwb::app::addGroebnerCommand(app, groebnerArguments);
+    sdfwb::app::TradeoffArguments tradeoffArguments;
+    CLI::App* tradeoff = sdfwb::app::addTradeoffCommand(app, tradeoffArguments);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -70,6 +73,9 @@ int main(int argc, char** argv) {
     }
     if (compare->parsed()) {
         return sdfwb::app::runCompare(compareArguments);
+    }
+    if (tradeoff->parsed()) {
+        return sdfwb::app::runTradeoff(tradeoffArguments);
     }
     if (parity->parsed()) {
         return sdfwb::app::runParity(parityArguments);

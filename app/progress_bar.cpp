@@ -15,20 +15,24 @@ ProgressBar::~ProgressBar() {
     }
 }
 
-void ProgressBar::update(int done, int total) {
+void ProgressBar::update(int done, int total) { update(done, total, ""); }
+
+void ProgressBar::update(int done, int total, const std::string& detail) {
     if (!enabled_ || total <= 0) {
         return;
     }
     int percent = done * 100 / total;
-    if (percent == lastPercent_) {
+    if (percent == lastPercent_ && detail == lastDetail_) {
         return;
     }
     lastPercent_ = percent;
+    lastDetail_ = detail;
     constexpr int kWidth = 40;
     int filled = percent * kWidth / 100;
     std::string bar(static_cast<size_t>(filled), '#');
     bar.append(static_cast<size_t>(kWidth - filled), '.');
-    std::fprintf(stderr, "\r%s [%s] %3d%%", label_.c_str(), bar.c_str(), percent);
+    std::fprintf(stderr, "\r\033[K%s [%s] %3d%%%s%s", label_.c_str(), bar.c_str(), percent, detail.empty() ? "" : " ",
+                 detail.c_str());
     std::fflush(stderr);
 }
 

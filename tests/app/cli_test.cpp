@@ -191,4 +191,87 @@ TEST_F(Cli, AlgebraInputErrorsAreOneLineWithAColumn) {
     EXPECT_NE(unknown.output.find("'w'"), std::string::npos) << unknown.output;
 }
 
+// A lit sphere on a floor, small enough to sweep in a test.
+void writeTinyScene(const fs::path& file) {
+    std::ofstream(file) << R"({"format": "sdf-workbench-scene", "version": 1, "name": "tiny",
+        "render": {"aa": 1, "max_steps": 32, "shadows": "hard", "shadow_steps": 16, "ao_samples": 0},
+        "environment": {"ground": {"enabled": true}},
+        "root": {"kind": "sphere", "radius": 1}})";
+}
+
+TEST_F(Cli, TradeoffReportsFrontsAndPlotsAndRendersTheReferenceOnce) {
+    // relative paths, as a user in the scenes' folder gives them: the report names the scene so
+    struct InFolder {
+        fs::path previous = fs::current_path();
+        explicit InFolder(const fs::path& folder) { fs::current_path(folder); }
+        ~InFolder() { fs::current_path(previous); }
+    } inFolder(folder_);
+    fs::path scene = "tiny.json", report = "report.md", plots = "plots", cache = "cache";
+    writeTinyScene(scene);
+    std::string arguments = "tradeoff " + scene.string() + " --size 16x9 --repetitions 1 --knobs max_steps=8,64 aa=2 " +
+                            "ao_samples --report " + report.string() + " --plot-dir " + plots.string() + " --cache " +
+                            cache.string();
+    ProcessResult first = run(arguments);
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    std::ifstream in(report);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("## Summary"), std::string::npos) << text;
+    EXPECT_NE(text.find("| tiny.json | cpu |"), std::string::npos) << text;
+    EXPECT_NE(text.find("| tiny.json | gl |"), std::string::npos) << text;
+    EXPECT_NE(text.find("| max_steps=8 | gl |"), std::string::npos) << text;
+    EXPECT_NE(text.find("| aa=2 | cpu |"), std::string::npos) << text;
+    EXPECT_NE(text.find("| default | cpu |"), std::string::npos) << text;
+    EXPECT_NE(text.find("front"), std::string::npos) << text;
+    EXPECT_NE(text.find("not swept: `ao_samples` (AO off)"), std::string::npos) << text;
+    EXPECT_NE(text.find("Reference: double-precision CPU, AA 2, epsilon 0.0001, max steps 320"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("rendered in"), std::string::npos);
+    EXPECT_NE(text.find("](plots/tiny.png)"), std::string::npos) << text;
+    auto png = OIIO::ImageInput::open((plots / "tiny.png").string());
+    ASSERT_TRUE(png);
+    EXPECT_GT(png->spec().width, 100);
+    EXPECT_EQ(std::distance(fs::directory_iterator(cache), {}), 1);
+
+    ProcessResult second = run(arguments);
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    std::ifstream again(report);
+    std::string secondText((std::istreambuf_iterator<char>(again)), {});
+    EXPECT_NE(secondText.find("(cached)"), std::string::npos);
+    EXPECT_EQ(std::distance(fs::directory_iterator(cache), {}), 1);
+}
+
+TEST_F(Cli, TradeoffOutOfBudgetSaysWhatItSkipped) {
+    fs::path scene = path("tiny.json"), report = path("report.md");
+    writeTinyScene(scene);
+    // a nanosecond has passed before the first render can start
+    ProcessResult r = run("tradeoff " + scene.string() + " --backend cpu --size 16x9 --knobs max_steps=8 --budget 1e-9 --report " +
+                          report.string() + " --cache " + path("cache").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("the budget ran out; 3 renders skipped"), std::string::npos) << r.output;
+    std::ifstream in(report);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("skipped for the budget: reference, default, max_steps=8"), std::string::npos) << text;
+    EXPECT_FALSE(fs::exists(path("cache")));
+}
+
+TEST_F(Cli, TradeoffBadArgumentsFailInOneLineAndWriteNothing) {
+    fs::path scene = path("tiny.json"), report = path("report.md");
+    writeTinyScene(scene);
+    ProcessResult knob = run("tradeoff " + scene.string() + " --knobs speed --report " + report.string());
+    EXPECT_EQ(knob.exitCode, 2);
+    EXPECT_EQ(knob.output.find("sdf-workbench tradeoff: --knobs: unknown knob 'speed' (known: epsilon,"), 0u)
+        << knob.output;
+    ProcessResult value = run("tradeoff " + scene.string() + " --knobs max_steps=0 --report " + report.string());
+    EXPECT_EQ(value.exitCode, 2);
+    EXPECT_NE(value.output.find("max_steps=0: render.max_steps"), std::string::npos) << value.output;
+    ProcessResult plot = run("tradeoff " + scene.string() + " " + scene.string() + " --plot " +
+                             path("p.png").string() + " --report " + report.string());
+    EXPECT_NE(plot.exitCode, 0);
+    EXPECT_NE(plot.output.find("--plot takes one scene"), std::string::npos) << plot.output;
+    ProcessResult folder = run("tradeoff " + scene.string() + " --report " + path("missing/r.md").string());
+    EXPECT_NE(folder.exitCode, 0);
+    EXPECT_NE(folder.output.find("does not exist"), std::string::npos) << folder.output;
+    EXPECT_EQ(filesInFolder(), 1u);  // the scene only
+}
+
 }  // namespace

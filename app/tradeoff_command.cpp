@@ -1,0 +1,177 @@
+#include "app/tradeoff_command.h"
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+#include "app/progress_bar.h"
+#include "app/scene_source.h"
+#include "app/size_argument.h"
+#include "io/atomic_file.h"
+#include "scene/scene_json.h"
+#include "tradeoff/plot.h"
+#include "tradeoff/report.h"
+#include "tradeoff/sweep.h"
+
+namespace sdfwb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onTradeoffInterrupt(int) { interrupted = true; }
+
+fs::path defaultCacheDir() {
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    fs::path base = xdg != nullptr && *xdg != '\0' ? fs::path(xdg)
+                    : home != nullptr            ? fs::path(home) / ".cache"
+                                                 : fs::temp_directory_path();
+    return base / "sdf-workbench" / "references";
+}
+
+// The scene's path as given, "scenes/hard/thin_blade.json" -> "scenes-hard-thin_blade.png"
+std::string plotFileName(const std::string& sceneName) {
+    std::string name = fs::path(sceneName).replace_extension().string();
+    for (char& c : name) {
+        if (c == '/' || c == '\\') c = '-';
+    }
+    while (!name.empty() && (name.front() == '.' || name.front() == '-')) name.erase(name.begin());
+    return name + ".png";
+}
+
+std::string formatDuration(double seconds) {
+    int s = static_cast<int>(seconds + 0.5);
+    std::ostringstream out;
+    if (s >= 3600) out << s / 3600 << " h ";
+    if (s >= 60) out << (s / 60) % 60 << " min ";
+    out << s % 60 << " s";
+    return out.str();
+}
+
+std::string commandText(const TradeoffArguments& a) {
+    std::ostringstream out;
+    out << "sdf-workbench tradeoff";
+    for (const std::string& p : a.paths) out << " " << p;
+    out << " --backend " << a.backend << " --size " << a.size << " --repetitions " << a.repetitions;
+    if (!a.knobs.empty()) {
+        out << " --knobs";
+        for (const std::string& k : a.knobs) out << " " << k;
+    }
+    if (a.budget > 0) out << " --budget " << a.budget;
+    out << " --report " << a.report;
+    if (!a.plotDir.empty()) out << " --plot-dir " << a.plotDir;
+    if (!a.plot.empty()) out << " --plot " << a.plot;
+    return out.str();
+}
+
+}  // namespace
+
+CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArguments& a) {
+    CLI::App* c = app.add_subcommand("tradeoff", "Measure what quality settings cost in time and in error against a "
+                                                 "reference, and write a report with Pareto fronts");
+    c->add_option("scenes", a.paths, "Scene files or folders (searched for .json)")->required();
+    c->add_option("--backend", a.backend, "Backends to time: cpu, gl or both (interleaved)")
+        ->check(CLI::IsMember({"cpu", "gl", "both"}))
+        ->capture_default_str();
+    c->add_option("--knobs", a.knobs,
+                  "Knobs to sweep, each NAME or NAME=V1,V2,... (default: all, with values around the scene's): "
+                  "epsilon, epsilon_mode, max_steps, max_distance, shadows, shadow_steps, ao_samples, aa");
+    c->add_option("--budget", a.budget, "Stop sweeping after this many seconds and report what was skipped")
+        ->check(CLI::Range(0.0, 1e7));
+    c->add_option("--report", a.report, "Markdown report to write")->required();
+    auto* plotDir = c->add_option("--plot-dir", a.plotDir, "Write one time-against-error plot (PNG) per scene here");
+    c->add_option("--plot", a.plot, "With one scene: write its plot (PNG) to this file")->excludes(plotDir);
+    c->add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    c->add_option("--repetitions", a.repetitions, "Timed renders per setting and backend (median reported)")
+        ->check(CLI::Range(1, 50))
+        ->capture_default_str();
+    c->add_option("--cache", a.cacheDir,
+                  "Folder of cached reference renders (default: $XDG_CACHE_HOME/sdf-workbench/references)");
+    return c;
+}
+
+int runTradeoff(const TradeoffArguments& a) {
+    try {
+        auto [width, height] = parseSizeArgument(a.size);
+        std::vector<tradeoff::KnobRequest> knobs = tradeoff::parseKnobRequests(a.knobs);
+        std::vector<fs::path> files = sceneFiles(a.paths);
+        if (files.empty()) throw std::runtime_error("no scene files found in " + a.paths.front());
+        if (!a.plot.empty() && files.size() != 1) {
+            throw std::runtime_error("--plot takes one scene (got " + std::to_string(files.size()) +
+                                     "); use --plot-dir for several");
+        }
+        io::checkCanCreate(a.report);
+        if (!a.plot.empty()) io::checkCanCreate(a.plot);
+        if (!a.plotDir.empty()) {
+            fs::create_directories(a.plotDir);
+            io::checkCanCreate(fs::path(a.plotDir) / "plot.png");
+        }
+        std::vector<tradeoff::SceneInput> scenes;
+        for (const fs::path& file : files) scenes.push_back({file.generic_string(), scene::loadSceneFile(file)});
+
+        std::vector<std::unique_ptr<tradeoff::TimedBackend>> owned;
+        if (a.backend != "gl") owned.push_back(tradeoff::makeCpuBackend());
+        if (a.backend != "cpu") owned.push_back(tradeoff::makeGlBackend());
+        std::vector<tradeoff::TimedBackend*> backends;
+        for (auto& b : owned) backends.push_back(b.get());
+
+        tradeoff::SweepOptions options;
+        options.width = width;
+        options.height = height;
+        options.repetitions = a.repetitions;
+        if (a.budget > 0) options.budgetSeconds = a.budget;
+        options.cacheDir = a.cacheDir.empty() ? defaultCacheDir() : fs::path(a.cacheDir);
+        options.cancel = &interrupted;
+        ProgressBar bar("tradeoff");
+        options.progress = [&](const tradeoff::SweepProgress& p) {
+            std::string detail = std::to_string(p.scenesDone) + "/" + std::to_string(p.scenesTotal) + " scenes, " +
+                                 std::to_string(p.settingsDone) + "/" + std::to_string(p.settingsTotal) + " renders";
+            if (p.secondsLeft >= 0) detail += ", about " + formatDuration(p.secondsLeft) + " left";
+            bar.update(p.settingsDone, p.settingsTotal, detail + " | " + p.current);
+        };
+        std::signal(SIGINT, onTradeoffInterrupt);
+        std::signal(SIGTERM, onTradeoffInterrupt);
+
+        tradeoff::SweepResult result = tradeoff::runSweep(scenes, knobs, backends, options);
+        if (result.cancelled) {
+            std::cerr << "sdf-workbench tradeoff: cancelled; no report written\n";
+            return 130;
+        }
+
+        tradeoff::ReportContext context{commandText(a), {}};
+        fs::path reportFolder = fs::absolute(a.report).parent_path();
+        for (const tradeoff::SceneResult& scene : result.scenes) {
+            if (scene.results.empty()) continue;
+            fs::path png = !a.plot.empty()       ? fs::path(a.plot)
+                           : !a.plotDir.empty() ? fs::path(a.plotDir) / plotFileName(scene.name)
+                                                : fs::path();
+            if (png.empty()) continue;
+            tradeoff::plotScene(scene, result.backends, png);
+            context.plots[scene.name] = fs::relative(fs::absolute(png), reportFolder).generic_string();
+        }
+        io::writeTextAtomically(a.report, tradeoff::writeReport(result, context));
+        if (result.budgetExhausted) {
+            int skipped = 0;
+            for (const tradeoff::SceneResult& scene : result.scenes) skipped += static_cast<int>(scene.skipped.size());
+            std::cerr << "sdf-workbench tradeoff: the budget ran out; " << skipped
+                      << " renders skipped (listed in the report)\n";
+        }
+        std::cout << a.report << "\n";
+        return 0;
+    } catch (const scene::SceneError& error) {
+        for (const std::string& problem : error.problems()) std::cerr << "sdf-workbench tradeoff: " << problem << "\n";
+        return 2;
+    } catch (const std::invalid_argument& error) {
+        std::cerr << "sdf-workbench tradeoff: " << error.what() << "\n";
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "sdf-workbench tradeoff: " << error.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace sdfwb::app

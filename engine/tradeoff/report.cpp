@@ -1,0 +1,178 @@
+#include "tradeoff/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "tradeoff/analysis.h"
+
+namespace sdfwb::tradeoff {
+namespace {
+
+std::string format(const char* pattern, double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, pattern, value);
+    return buffer;
+}
+
+std::string milliseconds(double seconds) { return format("%.1f", seconds * 1000.0); }
+
+std::string describeSettings(const scene::Scene& s) {
+    const scene::RenderSettings& r = s.render;
+    std::ostringstream out;
+    out << "AA " << r.aa << ", epsilon " << r.epsilon << (r.epsilonMode == scene::EpsilonMode::Pixel ? " px" : "")
+        << ", max steps " << r.maxSteps << ", max distance " << r.maxDistance << ", shadow steps " << r.shadowSteps
+        << ", AO samples " << r.aoSamples;
+    return out.str();
+}
+
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    size_t n = v.size();
+    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+constexpr const char* kRowHeader =
+    "| setting | backend | ms | x default | mean steps | max steps | mean err | max err | PSNR dB | % > 1/255 | "
+    "% > 8/255 | hit mismatch % | depth err % | |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+
+std::string row(const SceneResult& scene, size_t index, size_t backend, const std::string& backendName,
+                const BackendAnalysis& a) {
+    const Measurement& m = scene.results[index].byBackend[backend];
+    const Measurement& d = scene.results[0].byBackend[backend];
+    const image::Comparison& c = m.error.display;
+    std::vector<std::string> marks;
+    if (index == 0) marks.push_back("default");
+    if (std::find(a.front.begin(), a.front.end(), index) != a.front.end()) marks.push_back("front");
+    if (a.withinTolerance == index) marks.push_back("cheapest within 1/255");
+    std::string markText;
+    for (const std::string& mark : marks) markText += (markText.empty() ? "" : ", ") + mark;
+    std::ostringstream out;
+    out << "| " << scene.results[index].setting.label << " | " << backendName << " | " << milliseconds(m.seconds)
+        << " | " << format("%.2f", m.seconds > 0 ? d.seconds / m.seconds : 0) << " | " << format("%.1f", m.meanSteps)
+        << " | " << format("%.0f", m.maxSteps) << " | " << format("%.3f", c.meanAbs) << " | "
+        << format("%.0f", c.maxAbs) << " | " << (std::isinf(c.psnr) ? std::string("inf") : format("%.1f", c.psnr))
+        << " | " << format("%.2f", c.percentAbove1) << " | " << format("%.2f", c.percentAbove8) << " | "
+        << format("%.3f", 100.0 * m.error.hitMismatch) << " | " << format("%.3f", 100.0 * m.error.depthError) << " | "
+        << markText << " |\n";
+    return out.str();
+}
+
+void writeScene(std::ostringstream& out, const SweepResult& result, const SceneResult& scene,
+                const ReportContext& context) {
+    out << "## " << scene.name << "\n\n";
+    out << "Default: " << describeSettings(scene.scene) << ".  \n";
+    out << "Reference: double-precision CPU, " << describeSettings(scene.reference) << " ("
+        << (scene.referenceCached ? std::string("cached") : format("rendered in %.1f s", scene.referenceSeconds))
+        << ").\n\n";
+    for (const SkippedKnob& k : scene.notSwept) out << "- not swept: `" << k.knob << "` (" << k.reason << ")\n";
+    if (!scene.skipped.empty()) {
+        out << "- skipped for the budget: ";
+        for (size_t i = 0; i < scene.skipped.size(); ++i) out << (i ? ", " : "") << scene.skipped[i];
+        out << "\n";
+    }
+    if (!scene.notSwept.empty() || !scene.skipped.empty()) out << "\n";
+    if (scene.results.empty()) return;
+    if (auto plot = context.plots.find(scene.name); plot != context.plots.end()) {
+        out << "![time against error, " << scene.name << "](" << plot->second << ")\n\n";
+    }
+    out << "Pareto front, the default and the cheapest setting within 1/255:\n\n" << kRowHeader;
+    std::vector<BackendAnalysis> analyses;
+    for (size_t b = 0; b < result.backends.size(); ++b) analyses.push_back(analyse(scene, b));
+    for (size_t b = 0; b < result.backends.size(); ++b) {
+        const BackendAnalysis& a = analyses[b];
+        std::vector<size_t> shown = a.front;
+        shown.push_back(0);
+        if (a.withinTolerance) shown.push_back(*a.withinTolerance);
+        std::sort(shown.begin(), shown.end(), [&](size_t x, size_t y) { return a.points[x].cost < a.points[y].cost; });
+        shown.erase(std::unique(shown.begin(), shown.end()), shown.end());
+        for (size_t i : shown) out << row(scene, i, b, result.backends[b], a);
+    }
+    out << "\n<details><summary>all " << scene.results.size() << " settings</summary>\n\n" << kRowHeader;
+    for (size_t i = 0; i < scene.results.size(); ++i) {
+        for (size_t b = 0; b < result.backends.size(); ++b) out << row(scene, i, b, result.backends[b], analyses[b]);
+    }
+    out << "\n</details>\n\n";
+}
+
+struct BackendTotals {
+    int measured = 0;       // scenes with a measured default
+    int defaultOnFront = 0;
+    int defaultWithin = 0;  // defaults within 1/255 of the reference
+    std::vector<double> speedups;  // default time / cheapest-within-1/255 time
+};
+
+void writeSummary(std::ostringstream& out, const SweepResult& result) {
+    std::ostringstream table;
+    table << "| scene | backend | default ms | default mean err | default on front | cheapest within 1/255 | ms | "
+             "speed-up |\n|---|---|---|---|---|---|---|---|\n";
+    std::vector<BackendTotals> totals(result.backends.size());
+    for (size_t b = 0; b < result.backends.size(); ++b) {
+        for (const SceneResult& scene : result.scenes) {
+            if (scene.results.empty()) continue;
+            BackendAnalysis a = analyse(scene, b);
+            const Measurement& d = scene.results[0].byBackend[b];
+            BackendTotals& t = totals[b];
+            ++t.measured;
+            t.defaultOnFront += a.defaultOnFront ? 1 : 0;
+            t.defaultWithin += d.error.display.meanAbs <= kErrorTolerance ? 1 : 0;
+            table << "| " << scene.name << " | " << result.backends[b] << " | " << milliseconds(d.seconds) << " | "
+                  << format("%.3f", d.error.display.meanAbs) << " | " << (a.defaultOnFront ? "yes" : "no") << " | ";
+            if (!a.withinTolerance) {
+                table << "none | | |\n";
+                continue;
+            }
+            const Measurement& c = scene.results[*a.withinTolerance].byBackend[b];
+            double speedup = c.seconds > 0 ? d.seconds / c.seconds : 0;
+            t.speedups.push_back(speedup);
+            table << scene.results[*a.withinTolerance].setting.label << " | " << milliseconds(c.seconds) << " | "
+                  << format("%.2f", speedup) << " |\n";
+        }
+    }
+    out << "## Summary\n\n";
+    for (size_t b = 0; b < result.backends.size(); ++b) {
+        const BackendTotals& t = totals[b];
+        out << "- " << result.backends[b] << ": " << t.measured << " scenes measured; the default is on the front in "
+            << t.defaultOnFront << ", within 1/255 mean error of the reference in " << t.defaultWithin
+            << "; a setting within 1/255 exists in " << t.speedups.size()
+            << ", and the cheapest such is a median " << format("%.2f", medianOf(t.speedups))
+            << "x faster than the default.\n";
+    }
+    out << "\n" << table.str() << "\n";
+}
+
+void writeSkipped(std::ostringstream& out, const SweepResult& result) {
+    if (!result.budgetExhausted) return;
+    out << "**The budget ran out**: ";
+    int settings = 0, scenes = 0;
+    for (const SceneResult& scene : result.scenes) {
+        settings += static_cast<int>(scene.skipped.size());
+        scenes += scene.results.empty() ? 1 : 0;
+    }
+    out << settings << " settings were not measured (" << scenes
+        << " scenes not at all); each scene below lists what it skipped.\n\n";
+}
+
+}  // namespace
+
+std::string writeReport(const SweepResult& result, const ReportContext& context) {
+    std::ostringstream out;
+    out << "# Speed against error\n\n";
+    if (!context.command.empty()) out << "Made by `" << context.command << "`";
+    out << " in " << format("%.0f", result.seconds) << " s.\n\n"
+        << "Time is the median of the repetitions of each render (backends interleaved, shader builds excluded). "
+           "Errors are against the reference (double-precision CPU, tight settings), on the 8-bit display encoding "
+           "as `compare` prints them; hit mismatch is the share of sub-samples that hit in one image only, depth "
+           "error the mean relative difference of the march distance where both hit everywhere in the pixel. "
+           "Steps are primary-march evaluations per sub-sample. A setting is on the Pareto front when no other is "
+           "both faster and closer to the reference; each knob is varied alone around the scene's default.\n\n";
+    writeSkipped(out, result);
+    writeSummary(out, result);
+    for (const SceneResult& scene : result.scenes) writeScene(out, result, scene, context);
+    return out.str();
+}
+
+}  // namespace sdfwb::tradeoff

@@ -1,0 +1,184 @@
+#include "tradeoff/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "program/compile_scene.h"
+
+namespace sdfwb::tradeoff {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n == 0 ? 0.0 : n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+bool sameImage(const image::Frame& a, const image::Frame& b) { return a.color.rgb == b.color.rgb && a.steps == b.steps; }
+
+class Sweep {
+public:
+    Sweep(const std::vector<TimedBackend*>& backends, const SweepOptions& options)
+        : backends_(backends), options_(options), start_(Clock::now()) {}
+
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+    bool cancelled() const { return options_.cancel != nullptr && options_.cancel->load(); }
+    bool outOfTime() const { return elapsed() >= options_.budgetSeconds; }
+
+    // One unit of work done (a reference or a setting); `measured` when it took rendering time.
+    void advance(const std::string& current, bool measured) {
+        ++progress_.settingsDone;
+        if (measured) ++measuredUnits_;
+        report(current);
+    }
+
+    void report(const std::string& current) {
+        if (!options_.progress) return;
+        progress_.elapsedSeconds = elapsed();
+        progress_.current = current;
+        int left = progress_.settingsTotal - progress_.settingsDone;
+        progress_.secondsLeft = measuredUnits_ > 0 ? progress_.elapsedSeconds / measuredUnits_ * left : -1;
+        options_.progress(progress_);
+    }
+
+    SweepProgress progress_;
+
+    // Renders `setting` with every backend, `repetitions` times interleaved.
+    // Nothing when cancelled.
+    std::optional<std::pair<SettingResult, image::Frame>> measure(const Setting& setting,
+                                                                  const image::Frame& reference) {
+        program::Program program = program::compileScene(setting.scene);
+        SettingResult result{setting, std::vector<Measurement>(backends_.size())};
+        image::Frame first;
+        for (int rep = 0; rep < std::max(1, options_.repetitions); ++rep) {
+            for (size_t b = 0; b < backends_.size(); ++b) {
+                std::optional<TimedFrame> timed = backends_[b]->render(program, options_.cancel);
+                if (!timed) return std::nullopt;
+                Measurement& m = result.byBackend[b];
+                m.repetitionSeconds.push_back(timed->seconds);
+                if (rep > 0) continue;  // renders are deterministic: measure the first
+                image::FrameStats stats = image::frameStats(timed->frame);
+                m.meanSteps = stats.meanSteps;
+                m.maxSteps = stats.maxSteps;
+                m.error = frameError(timed->frame, reference);
+                if (b == 0) first = std::move(timed->frame);
+            }
+        }
+        for (Measurement& m : result.byBackend) m.seconds = median(m.repetitionSeconds);
+        return std::make_pair(std::move(result), std::move(first));
+    }
+
+    const std::vector<TimedBackend*>& backends_;
+    const SweepOptions& options_;
+    Clock::time_point start_;
+    int measuredUnits_ = 0;
+};
+
+scene::Scene atMeasuredSize(scene::Scene scene, const SweepOptions& options) {
+    scene.render.width = options.width;
+    scene.render.height = options.height;
+    return scene;
+}
+
+// Most AA any planned setting uses: the reference resolves at least that finely.
+int largestAa(const SweepPlan& plan) {
+    int aa = 1;
+    for (const Setting& s : plan.settings) aa = std::max(aa, s.scene.render.aa);
+    return aa;
+}
+
+}  // namespace
+
+SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<KnobRequest>& knobs,
+                     const std::vector<TimedBackend*>& backends, const SweepOptions& options) {
+    Sweep sweep(backends, options);
+    SweepResult result;
+    for (TimedBackend* backend : backends) result.backends.push_back(backend->name());
+
+    std::vector<SweepPlan> plans;
+    for (const SceneInput& input : scenes) {
+        plans.push_back(planSweep(atMeasuredSize(input.scene, options), knobs));
+        sweep.progress_.settingsTotal += 1 + static_cast<int>(plans.back().settings.size());
+    }
+    sweep.progress_.scenesTotal = static_cast<int>(scenes.size());
+
+    for (size_t i = 0; i < scenes.size() && !result.cancelled; ++i) {
+        const SweepPlan& plan = plans[i];
+        SceneResult& sr = result.scenes.emplace_back();
+        sr.name = scenes[i].name;
+        sr.scene = plan.settings.front().scene;
+        sr.notSwept = plan.notSwept;
+        ReferenceOptions referenceOptions = options.reference;
+        referenceOptions.minimumAa = std::max(referenceOptions.minimumAa, largestAa(plan));
+        sr.reference = referenceScene(sr.scene, referenceOptions);
+
+        auto skipRest = [&](size_t from) {
+            result.budgetExhausted = true;
+            for (size_t k = from; k < plan.settings.size(); ++k) {
+                sr.skipped.push_back(plan.settings[k].label);
+                sweep.advance(sr.name + ": " + plan.settings[k].label, false);
+            }
+        };
+        if (sweep.outOfTime()) {
+            sr.skipped.push_back("reference");
+            sweep.advance(sr.name + ": reference", false);
+            skipRest(0);
+            ++sweep.progress_.scenesDone;
+            continue;
+        }
+        sweep.report(sr.name + ": reference");
+        std::optional<ReferenceFrame> reference = obtainReference(sr.reference, options.cacheDir, options.cancel);
+        if (!reference) {
+            result.cancelled = true;
+            break;
+        }
+        sr.referenceCached = reference->fromCache;
+        sr.referenceSeconds = reference->seconds;
+        sweep.advance(sr.name + ": reference", !reference->fromCache);
+
+        // the shader build is not part of any timed render
+        program::Program structure = program::compileScene(sr.scene);
+        for (TimedBackend* backend : backends) backend->prepare(structure);
+
+        image::Frame defaultFrame;
+        const Knob* inertKnob = nullptr;  // the knob whose cheapest value changed nothing
+        for (size_t k = 0; k < plan.settings.size(); ++k) {
+            const Setting& setting = plan.settings[k];
+            if (setting.knob != nullptr && setting.knob == inertKnob) {
+                sweep.advance(sr.name + ": " + setting.label, false);
+                continue;
+            }
+            if (sweep.cancelled()) {
+                result.cancelled = true;
+                break;
+            }
+            if (sweep.outOfTime()) {
+                skipRest(k);
+                break;
+            }
+            sweep.report(sr.name + ": " + setting.label);
+            auto measured = sweep.measure(setting, reference->frame);
+            if (!measured) {
+                result.cancelled = true;
+                break;
+            }
+            bool firstOfKnob = setting.knob != nullptr && (k == 0 || plan.settings[k - 1].knob != setting.knob);
+            if (k == 0) {
+                defaultFrame = measured->second;
+            } else if (firstOfKnob && sameImage(measured->second, defaultFrame)) {
+                inertKnob = setting.knob;
+                sr.notSwept.push_back({std::string(setting.knob->name),
+                                       "image unchanged at " + setting.label.substr(setting.label.find('=') + 1)});
+            }
+            sr.results.push_back(std::move(measured->first));
+            sweep.advance(sr.name + ": " + setting.label, true);
+        }
+        ++sweep.progress_.scenesDone;
+    }
+    result.seconds = sweep.elapsed();
+    return result;
+}
+
+}  // namespace sdfwb::tradeoff

@@ -1,0 +1,115 @@
+// Which settings a sweep renders: knob parsing, default values around the
+// scene's, knobs that do nothing for a scene, values the format rejects.
+
+#include <gtest/gtest.h>
+
+#include "scene/scene_json.h"
+#include "tradeoff/sweep_plan.h"
+
+namespace sdfwb::tradeoff {
+namespace {
+
+std::vector<std::string> labels(const SweepPlan& plan) {
+    std::vector<std::string> out;
+    for (const Setting& s : plan.settings) out.push_back(s.label);
+    return out;
+}
+
+scene::Scene sceneWith(int aoSamples, scene::ShadowMode shadows) {
+    scene::Scene s;
+    s.render.width = 64;
+    s.render.height = 36;
+    s.render.aoSamples = aoSamples;
+    s.render.shadows = shadows;
+    return s;
+}
+
+TEST(KnobRequests, NamesAloneOrWithValuesAndEveryKnobWhenNoneIsNamed) {
+    std::vector<KnobRequest> all = parseKnobRequests({});
+    EXPECT_EQ(all.size(), knobs().size());
+    std::vector<KnobRequest> some = parseKnobRequests({"max_steps=64,128", "shadows=hard,none", "aa"});
+    ASSERT_EQ(some.size(), 3u);
+    EXPECT_EQ(some[0].knob->name, "max_steps");
+    EXPECT_EQ(some[0].values, (std::vector<double>{64, 128}));
+    EXPECT_EQ(some[1].values, (std::vector<double>{1, 0}));  // codes of "hard", "none"
+    EXPECT_TRUE(some[2].values.empty());
+}
+
+TEST(KnobRequests, BadSpecsSayWhatIsWrong) {
+    auto message = [](std::vector<std::string> specs) {
+        try {
+            parseKnobRequests(specs);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message({"speed"}).find("unknown knob 'speed'"), std::string::npos);
+    EXPECT_NE(message({"epsilon=abc"}).find("epsilon: 'abc' is not a number"), std::string::npos);
+    EXPECT_NE(message({"max_steps=12.5"}).find("not a whole number"), std::string::npos);
+    EXPECT_NE(message({"shadows=blurry"}).find("'blurry' is not one of none, hard, soft, improved"),
+              std::string::npos);
+    EXPECT_NE(message({"aa", "aa=2"}).find("given twice"), std::string::npos);
+}
+
+TEST(SweepPlan, StartsWithTheDefaultAndVariesOneKnobAtATime) {
+    scene::Scene base = sceneWith(4, scene::ShadowMode::Soft);
+    SweepPlan plan = planSweep(base, parseKnobRequests({"max_steps=64,256,512", "ao_samples=2"}));
+    // 256 is the scene's own: it is the default, not swept again
+    EXPECT_EQ(labels(plan), (std::vector<std::string>{"default", "max_steps=64", "max_steps=512", "ao_samples=2"}));
+    EXPECT_EQ(plan.settings[0].scene, base);
+    EXPECT_EQ(plan.settings[2].scene.render.maxSteps, 512);
+    EXPECT_EQ(plan.settings[2].scene.render.aoSamples, 4);
+    EXPECT_EQ(plan.settings[3].scene.render.aoSamples, 2);
+    EXPECT_EQ(plan.settings[3].scene.render.maxSteps, 256);
+}
+
+TEST(SweepPlan, DefaultValuesSurroundTheScenesAndStartWithTheCheapest) {
+    scene::Scene base = sceneWith(4, scene::ShadowMode::Soft);
+    base.render.epsilon = 0.002;
+    SweepPlan plan = planSweep(base, parseKnobRequests({"epsilon", "shadow_steps", "aa"}));
+    EXPECT_EQ(labels(plan), (std::vector<std::string>{"default", "epsilon=0.008", "epsilon=0.004", "epsilon=0.001",
+                                                      "epsilon=0.0005", "shadow_steps=16", "shadow_steps=32",
+                                                      "shadow_steps=128", "aa=2", "aa=3"}));
+}
+
+TEST(SweepPlan, KnobsThatDoNothingForTheSceneAreNotSwept) {
+    SweepPlan plan = planSweep(sceneWith(0, scene::ShadowMode::None), parseKnobRequests({}));
+    ASSERT_EQ(plan.notSwept.size(), 2u);
+    EXPECT_EQ(plan.notSwept[0].knob, "shadow_steps");
+    EXPECT_EQ(plan.notSwept[0].reason, "shadows off");
+    EXPECT_EQ(plan.notSwept[1].knob, "ao_samples");
+    EXPECT_EQ(plan.notSwept[1].reason, "AO off");
+    for (const Setting& s : plan.settings) {
+        ASSERT_NE(s.label.rfind("shadow_steps", 0), 0u) << s.label;
+        ASSERT_NE(s.label.rfind("ao_samples", 0), 0u) << s.label;
+    }
+}
+
+TEST(SweepPlan, EpsilonModeKeepsTheThresholdAtTheCameraDistance) {
+    scene::Scene base = sceneWith(0, scene::ShadowMode::Soft);
+    base.render.epsilonMode = scene::EpsilonMode::Pixel;
+    base.render.epsilon = 0.5;
+    SweepPlan plan = planSweep(base, parseKnobRequests({"epsilon_mode"}));
+    ASSERT_EQ(plan.settings.size(), 2u);
+    const scene::RenderSettings& r = plan.settings[1].scene.render;
+    EXPECT_EQ(r.epsilonMode, scene::EpsilonMode::Absolute);
+    // 0.5 of one sub-sample's footprint at the camera's distance (6, fov 45, 36 rows, AA 1)
+    EXPECT_NEAR(r.epsilon, 0.5 * 6.0 * 2.0 * std::tan(22.5 * M_PI / 180.0) / 36.0, 1e-12);
+}
+
+TEST(SweepPlan, ValuesTheFormatRejectsAreErrorsWhenGivenAndDroppedAsDefaults) {
+    scene::Scene base = sceneWith(0, scene::ShadowMode::Soft);
+    try {
+        planSweep(base, parseKnobRequests({"max_steps=0"}));
+        FAIL() << "no error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("max_steps=0: render.max_steps"), std::string::npos) << e.what();
+    }
+    base.render.maxSteps = 8000;  // x2 would pass the format's limit
+    SweepPlan plan = planSweep(base, parseKnobRequests({"max_steps"}));
+    EXPECT_EQ(labels(plan), (std::vector<std::string>{"default", "max_steps=2000", "max_steps=4000"}));
+}
+
+}  // namespace
+}  // namespace sdfwb::tradeoff
