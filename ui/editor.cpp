@@ -298,9 +298,23 @@ Problems Editor::setJsonValue(std::string_view jsonPath, const json& value, std:
 std::string_view Editor::undoLabel() const { return undo_.empty() ? std::string_view() : undo_.back().label; }
 std::string_view Editor::redoLabel() const { return redo_.empty() ? std::string_view() : redo_.back().label; }
 
+Problems Editor::setView(const scene::Camera& camera) {
+    // the loader's camera rules on a scene that holds nothing else
+    scene::Scene probe;
+    probe.camera = camera;
+    if (Problems problems = validateScene(probe); !problems.empty()) return problems;
+    if (scene_.camera != camera) {
+        scene_.camera = camera;
+        ++revision_;
+    }
+    return {};
+}
+
 void Editor::restore(Step& from, std::vector<Step>& to) {
     to.push_back({std::move(scene_), selection_, from.label, {}, stateId_});
+    scene::Camera view = scene_.camera;
     scene_ = std::move(from.scene);
+    scene_.camera = view;
     stateId_ = from.stateId;
     ++revision_;
     mergeOpen_ = false;

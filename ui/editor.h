@@ -49,6 +49,13 @@ public:
     // Closes the open merge: the next edit starts a new undo step.
     void endMerge() { mergeOpen_ = false; }
 
+    // --- The view (not an edit) ---
+    // Moves the camera without an undo step and without marking the document
+    // modified (the camera is still saved with the scene); undo and redo keep
+    // the current view. Refused, with the loader's words, for a camera the
+    // loader would not accept (distance <= 0, a field of view out of range).
+    Problems setView(const scene::Camera& camera);
+
     // --- Node edits (paths are JSON node paths) ---
     Problems setField(const NodePath& path, std::string_view field, scene::FieldValue value,
                       std::string_view mergeKey = {});

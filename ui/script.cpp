@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "scene/node_kinds.h"
+#include "ui/view_camera.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -33,6 +34,8 @@ constexpr CommandSpec kCommands[] = {
     {"heat", 1, 1, "heat on|off"},
     {"panel", 1, 1, "panel node|materials|lights|render|environment|library"},
     {"camera", 3, 3, "camera <azimuth> <elevation> <distance>"},
+    {"orbit", 2, 2, "orbit <azimuth step> <elevation step>"},
+    {"view", 1, 1, "view front|back|right|left|top|bottom|all|selected"},
     {"wait", 1, 1, "wait <frames>|idle"},
     {"screenshot", 1, 1, "screenshot <file.png>"},
     {"save", 1, 1, "save <file.json>"},
@@ -270,14 +273,30 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         for (int i = 0; i < 3; ++i) {
             if (!parseNumber(a[static_cast<size_t>(i)], v[i])) return fail(c, "\"" + a[static_cast<size_t>(i)] + "\" is not a number");
         }
-        nlohmann::ordered_json camera = {{"azimuth", v[0]}, {"elevation", v[1]}, {"distance", v[2]}};
-        Problems problems;
-        for (auto& [key, value] : camera.items()) {
-            Problems p = editor.setJsonValue("camera." + key, value, "script camera");
-            problems.insert(problems.end(), p.begin(), p.end());
+        scene::Camera camera = editor.scene().camera;
+        camera.azimuth = v[0];
+        camera.elevation = v[1];
+        camera.distance = v[2];
+        return done(editor.setView(camera));
+    }
+    if (c.name == "orbit") {
+        double v[2];
+        for (int i = 0; i < 2; ++i) {
+            if (!parseNumber(a[static_cast<size_t>(i)], v[i])) return fail(c, "\"" + a[static_cast<size_t>(i)] + "\" is not a number");
         }
-        editor.endMerge();
-        return done(problems);
+        return done(editor.setView(orbited(editor.scene().camera, editor.scene().environment, v[0], v[1])));
+    }
+    if (c.name == "view") {
+        if (a[0] == "all") return done(editor.setView(frameAllCamera(editor.scene())));
+        if (a[0] == "selected") {
+            if (!editor.selection()) return fail(c, "nothing is selected");
+            std::optional<scene::Camera> framed = frameSelectedCamera(editor.scene(), *editor.selection());
+            if (!framed) return fail(c, formatNodePath(*editor.selection()) + " is unbounded: nothing to frame");
+            return done(editor.setView(*framed));
+        }
+        std::optional<ViewPreset> preset = viewPresetNamed(a[0]);
+        if (!preset) return fail(c, "must be front, back, right, left, top, bottom, all or selected (got " + a[0] + ")");
+        return done(editor.setView(presetCamera(editor.scene().camera, *preset)));
     }
     if (c.name == "wait") {
         if (a[0] == "idle") {

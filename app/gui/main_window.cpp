@@ -14,6 +14,7 @@
 #include "ui/long_text.h"
 #include "ui/panels.h"
 #include "ui/user_paths.h"
+#include "ui/view_camera.h"
 
 namespace sdfwb::app::gui {
 namespace {
@@ -35,6 +36,59 @@ void duplicateSelection(AppState& app) {
 }
 void deleteSelection(AppState& app) {
     if (app.editor.selection()) ui::reportProblems(app.ui, app.editor.remove(*app.editor.selection()));
+}
+
+void frameSelected(AppState& app) {
+    if (!app.editor.selection()) return;
+    if (std::optional<scene::Camera> framed = ui::frameSelectedCamera(app.editor.scene(), *app.editor.selection())) {
+        app.editor.setView(*framed);
+    } else {
+        app.ui.info("the selection is unbounded: nothing to frame");
+    }
+}
+void setPreset(AppState& app, ui::ViewPreset preset) {
+    app.editor.setView(ui::presetCamera(app.editor.scene().camera, preset));
+}
+void orbitStep(AppState& app, double azimuth, double elevation) {
+    const scene::Scene& s = app.editor.scene();
+    app.editor.setView(ui::orbited(s.camera, s.environment, azimuth, elevation));
+}
+
+// The numeric keypad's views, as in Blender (Ctrl: the opposite side).
+struct ViewKey {
+    int key;
+    bool ctrl;
+    ui::ViewPreset preset;
+    const char* menu;
+    const char* shortcut;
+};
+constexpr ViewKey kViewKeys[] = {
+    {GLFW_KEY_KP_1, false, ui::ViewPreset::Front, "Front view", "Keypad 1"},
+    {GLFW_KEY_KP_1, true, ui::ViewPreset::Back, "Back view", "Ctrl+Keypad 1"},
+    {GLFW_KEY_KP_3, false, ui::ViewPreset::Right, "Right view", "Keypad 3"},
+    {GLFW_KEY_KP_3, true, ui::ViewPreset::Left, "Left view", "Ctrl+Keypad 3"},
+    {GLFW_KEY_KP_7, false, ui::ViewPreset::Top, "Top view", "Keypad 7"},
+    {GLFW_KEY_KP_7, true, ui::ViewPreset::Bottom, "Bottom view", "Ctrl+Keypad 7"},
+};
+constexpr double kOrbitKeyStep = 15.0;  // degrees per keypad 2, 4, 6, 8 press, as Blender's
+
+// The view keys of the numeric keypad; false for any other key.
+bool viewShortcut(AppState& app, const KeyPress& press, bool ctrl) {
+    for (const ViewKey& view : kViewKeys) {
+        if (view.key == press.key && view.ctrl == ctrl) {
+            setPreset(app, view.preset);
+            return true;
+        }
+    }
+    switch (press.key) {
+    case GLFW_KEY_KP_4: orbitStep(app, -kOrbitKeyStep, 0); return true;
+    case GLFW_KEY_KP_6: orbitStep(app, kOrbitKeyStep, 0); return true;
+    case GLFW_KEY_KP_8: orbitStep(app, 0, kOrbitKeyStep); return true;
+    case GLFW_KEY_KP_2: orbitStep(app, 0, -kOrbitKeyStep); return true;
+    case GLFW_KEY_KP_DECIMAL: frameSelected(app); return true;
+    case GLFW_KEY_HOME: frameAll(app); return true;
+    default: return false;
+    }
 }
 
 void menuBar(AppState& app) {
@@ -91,7 +145,11 @@ void menuBar(AppState& app) {
         ImGui::MenuItem("Node thumbnails", nullptr, &app.ui.showThumbnails);
         ImGui::MenuItem("Polynomial (implicitize)", nullptr, &app.polynomial.open);
         ImGui::Separator();
-        if (ImGui::MenuItem("Frame all", "F")) frameAll(app);
+        if (ImGui::MenuItem("Frame all", "Home, F")) frameAll(app);
+        if (ImGui::MenuItem("Frame selected", "Keypad .", false, app.editor.selection().has_value())) frameSelected(app);
+        for (const ViewKey& view : kViewKeys) {
+            if (ImGui::MenuItem(view.menu, view.shortcut)) setPreset(app, view.preset);
+        }
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -259,6 +317,7 @@ void handleShortcuts(AppState& app) {
     if (ImGui::GetIO().WantTextInput) return;  // Ctrl+Z in a text field is the field's own undo
     for (const KeyPress& press : presses) {
         bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
+        if (viewShortcut(app, press, ctrl)) continue;
         switch (ctrl ? press.key : -press.key) {  // negative: the key without Ctrl
         case GLFW_KEY_Z: shift ? redo(app) : undo(app); break;
         case GLFW_KEY_Y: redo(app); break;

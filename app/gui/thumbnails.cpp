@@ -2,7 +2,7 @@
 
 #include <functional>
 
-#include "app/gui/camera_framing.h"
+#include "ui/view_camera.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
 
@@ -42,7 +42,7 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         scene::Scene alone = scene;
         alone.root = node;
         alone.environment.ground.enabled = false;
-        alone.camera = framedCamera(scene.camera, node);
+        alone.camera = ui::framedCamera(scene.camera, node);
         alone.render.aa = 1;
         program::CompileOptions options{kSize, kSize, 1};
         jobs_.submit({key, program::compileScene(alone, options)}, false);

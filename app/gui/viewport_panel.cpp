@@ -5,42 +5,47 @@
 
 #include <imgui.h>
 
-#include "app/gui/camera_framing.h"
-#include "scene/camera_frame.h"
+#include "ui/view_camera.h"
 
 namespace sdfwb::app::gui {
 namespace {
 
 // Orbit with the left button, pan the target with the right or middle
-// button, distance with the wheel; each drag is one undo step.
+// button, distance with the wheel: view changes, not undo steps (ui/view_camera.h).
 bool cameraControls(AppState& app, ImVec2 size) {
     ImGui::InvisibleButton("camera", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
     const ImGuiIO& io = ImGui::GetIO();
     bool active = ImGui::IsItemActive();
+    const scene::Scene& s = app.editor.scene();
     if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
         ImVec2 d = io.MouseDelta;
         bool pan = ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle);
-        app.editor.apply(pan ? "Pan camera" : "Orbit camera", [&](scene::Scene& s) {
-            scene::Camera& c = s.camera;
-            if (pan) {
-                scene::CameraFrame frame = scene::cameraFrame(c);
-                double perPixel = 2.0 * c.distance * frame.tanHalfFov / std::max(1.0f, size.y);
-                c.target += (-d.x * perPixel) * frame.right + (d.y * perPixel) * frame.up;
-            } else {
-                c.azimuth = std::remainder(c.azimuth - 0.4 * d.x, 360.0);
-                c.elevation = std::clamp(c.elevation + 0.4 * d.y, -89.0, 89.0);
-            }
-        }, "camera drag");
+        app.editor.setView(pan ? ui::panned(s.camera, d.x, d.y, size.y)
+                               : ui::orbited(s.camera, s.environment, -0.4 * d.x, 0.4 * d.y));
     }
-    if (ImGui::IsItemDeactivated()) app.editor.endMerge();
     if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
-        app.editor.apply("Zoom camera", [&](scene::Scene& s) {
-            s.camera.distance = std::max(1e-3, s.camera.distance * std::pow(0.9, io.MouseWheel));
-        }, "camera zoom");
+        app.editor.setView(ui::zoomed(s.camera, s.environment, io.MouseWheel));
     }
     return active;
+}
+
+// Why the view shows nothing, and the way back.
+void viewHint(const AppState& app, ImVec2 corner, ImVec2 size) {
+    const scene::Scene& s = app.editor.scene();
+    const char* hint = nullptr;
+    if (ui::eyeBelowGround(s.camera, s.environment)) {
+        hint = "The camera is below the ground. Press Home (Frame all) or drag down to come back up.";
+    } else if (app.viewport->stats().frame.hitRatio == 0 && app.viewport->stats().width > 0) {
+        hint = "Nothing in view. Press Home (Frame all) to see the whole scene.";
+    }
+    if (!hint) return;
+    ImVec2 text = ImGui::CalcTextSize(hint);
+    ImVec2 at(corner.x + std::max(8.0f, 0.5f * (size.x - text.x)), corner.y + size.y - text.y - 40);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(ImVec2(at.x - 8, at.y - 6), ImVec2(at.x + text.x + 8, at.y + text.y + 6), IM_COL32(20, 22, 26, 200), 4);
+    draw->AddText(at, IM_COL32(255, 220, 120, 255), hint);
 }
 
 void toolbar(AppState& app) {
@@ -106,7 +111,7 @@ void comparisonLine(const AppState& app) {
 }  // namespace
 
 void frameAll(AppState& app) {
-    app.editor.apply("Frame all", [](scene::Scene& s) { s.camera = framedCamera(s.camera, s.root); });
+    app.editor.setView(ui::frameAllCamera(app.editor.scene()));
 }
 
 void drawViewportPanel(AppState& app) {
@@ -148,6 +153,7 @@ void drawViewportPanel(AppState& app) {
     }
     ImGui::SetCursorScreenPos(corner);
     bool dragging = cameraControls(app, size);
+    viewHint(app, corner, size);
     // A slider drag counts as interaction while it keeps changing the scene
     // (not, say, while a tree row is dragged): render the quick preview then.
     double now = ImGui::GetTime();

@@ -8,6 +8,7 @@
 
 #include "scene/scene_json.h"
 #include "ui/script.h"
+#include "ui/view_camera.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -99,9 +100,10 @@ TEST(ScriptRunTest, EditsUndoAndSave) {
     EXPECT_EQ(run.ui.backend, ViewBackend::Cpu);
     EXPECT_EQ(run.host.saved, std::vector<std::string>{"out.json"});
     EXPECT_TRUE(run.host.quitCalled);
-    // the camera command is one undo step
+    // the camera command is a view change, not an undo step: undo takes back render.aa
     run.editor.undo();
-    EXPECT_EQ(run.editor.scene().camera.azimuth, 30);
+    EXPECT_EQ(run.editor.scene().camera.azimuth, 45);
+    EXPECT_EQ(run.editor.scene().render.aa, 2);
 }
 
 TEST(ScriptRunTest, InvalidValueStopsWithTheLineAndLoaderMessage) {
@@ -213,6 +215,22 @@ TEST(ScriptRunTest, PolynomialCommandErrorsNameTheLine) {
               "s:2: polynomial: column 5: 'sqrt' is not a polynomial or rational function");
     EXPECT_EQ(failure("polynomial order revlex\n").rfind("s:1: polynomial: unknown order \"revlex\"", 0), 0u);
     EXPECT_TRUE(editor.scene().root.children.empty());
+}
+
+}  // namespace
+}  // namespace sdfwb::ui
+
+namespace sdfwb::ui {
+namespace {
+
+TEST(ScriptRunTest, ViewCommandsMoveTheCameraWithoutModifyingTheScene) {
+    ScriptRun run("view top\nview front\norbit 0 -200\nselect root.children[0]\nview selected\nview all\nquit\n");
+    EXPECT_EQ(run.status, ScriptStatus::Finished) << run.error;  // quit: nothing unsaved
+    EXPECT_FALSE(run.editor.canUndo());
+    EXPECT_EQ(run.editor.scene().camera.elevation, kHomeElevation);
+    EXPECT_EQ(ScriptRun("view sideways\n").error,
+              "test.txt:1: view: must be front, back, right, left, top, bottom, all or selected (got sideways)");
+    EXPECT_EQ(ScriptRun("view selected\n").error, "test.txt:1: view: nothing is selected");
 }
 
 }  // namespace
