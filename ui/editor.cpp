@@ -214,14 +214,29 @@ Problems Editor::remove(const NodePath& path) {
     if (path.empty()) {
         return {"root: the root node cannot be deleted"};
     }
-    if (!findNode(scene_.root, path)) {
+    const Node* node = findNode(scene_.root, path);
+    if (!node) {
         return noNode(path);
     }
+    std::string label = "Delete " + std::string(scene::kindSpec(node->kind).name);
+    // a wrapper that needs a child (translate, twist, ...) goes with the node
+    // it held, and so on up: what is left is always a valid scene
+    NodePath removed = path;
+    while (removed.size() > 1) {
+        const Node* parent = findNode(scene_.root, parentOf(removed));
+        if (scene::kindSpec(parent->kind).minChildren < static_cast<int>(parent->children.size())) break;
+        removed = parentOf(removed);
+    }
     scene::Scene candidate = scene_;
-    auto& children = findNode(candidate.root, parentOf(path))->children;
-    std::string label = "Delete " + std::string(scene::kindSpec(children[static_cast<size_t>(path.back())].kind).name);
-    children.erase(children.begin() + path.back());
-    return commit(label, std::move(candidate), parentOf(path), {});
+    NodePath parent = parentOf(removed);
+    Node& holder = *findNode(candidate.root, parent);
+    holder.children.erase(holder.children.begin() + removed.back());
+    if (holder.children.size() < static_cast<size_t>(scene::kindSpec(holder.kind).minChildren)) {
+        holder = Node::make(NodeKind::Union);  // the root wrapper itself left empty
+    }
+    size_t wrappers = path.size() - removed.size();
+    if (wrappers > 0) label += " and " + std::to_string(wrappers) + (wrappers == 1 ? " wrapper" : " wrappers");
+    return commit(label, std::move(candidate), parent, {});
 }
 
 namespace {

@@ -74,6 +74,9 @@ public:
     // parent as it is before the move); reparent and reorder alike.
     Problems move(const NodePath& from, const NodePath& newParent, int index);
     Problems duplicate(const NodePath& path);
+    // Deletes the subtree and every wrapper it leaves without its one child
+    // (a translate around a deleted sphere), in one undo step; selects what
+    // held the topmost node removed.
     Problems remove(const NodePath& path);
 
     // Replaces the value at a JSON path of the scene file ("render.aa",

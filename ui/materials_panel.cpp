@@ -1,26 +1,15 @@
 // Materials: the scene's list, each editable (the thesis's R_A, R_D, R_E,
-// alpha, L_E); add, rename (references follow) and remove (refused while a
-// node uses it, with the loader's message).
+// alpha, L_E); add, rename (references follow) and remove (users reassigned,
+// ui/material_edits.h).
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/material_edits.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
 
 namespace sdfwb::ui {
-namespace {
-
-void renameReferences(scene::Node& node, const std::string& from, const std::string& to) {
-    int index = scene::fieldIndex(scene::kindSpec(node.kind), "material");
-    if (index >= 0 && std::get<std::string>(node.fields[static_cast<size_t>(index)]) == from) {
-        node.fields[static_cast<size_t>(index)] = to;
-    }
-    for (scene::Node& child : node.children) renameReferences(child, from, to);
-}
-
-}  // namespace
-
 void drawMaterialsPanel(Editor& editor, UiState& ui) {
     const scene::Scene& scene = editor.scene();
     if (ImGui::Button("Add material")) {
@@ -44,8 +33,7 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
                 std::string old = m.name;
                 reportProblems(ui, editor.apply("Rename material", [&](scene::Scene& s) {
                     s.materials[i].name = name;
-                    renameReferences(s.root, old, name);
-                    if (s.environment.ground.material == old) s.environment.ground.material = name;
+                    reassignMaterial(s, old, name);
                 }));
             }
             set("Edit material", colorEdit("diffuse", m.diffuse));
@@ -53,11 +41,7 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
             set("Edit material", colorEdit("specular", m.specular));
             set("Edit material", dragReal("shininess", m.shininess, 0.5, 0.1, 4096.0, "%.1f"));
             set("Edit material", colorEdit("emission", m.emission));
-            if (ImGui::SmallButton("Remove")) {
-                reportProblems(ui, editor.apply("Remove material", [i](scene::Scene& s) {
-                    s.materials.erase(s.materials.begin() + static_cast<long>(i));
-                }));
-            }
+            drawRemoveMaterialButton(editor, ui, i);
         }
         ImGui::PopID();
     }

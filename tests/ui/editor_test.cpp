@@ -71,6 +71,26 @@ TEST(EditorTest, DragEditsMergeIntoOneStep) {
     EXPECT_FALSE(editor.canUndo());
 }
 
+TEST(EditorTest, DeleteTakesEveryWrapperItEmptiesInOneStep) {
+    Editor editor(defaultScene());
+    // the box sits in a rotate in a translate: all three go, one undo step
+    EXPECT_TRUE(editor.remove({1, 0, 0}).empty());
+    EXPECT_EQ(editor.undoLabel(), "Delete box and 2 wrappers");
+    ASSERT_EQ(editor.scene().root.children.size(), 1u);
+    EXPECT_TRUE(validateScene(editor.scene()).empty());
+    ASSERT_TRUE(editor.undo());
+    EXPECT_EQ(editor.scene(), defaultScene());
+    // a root wrapper left empty becomes an empty union
+    scene::Scene wrapped = defaultScene();
+    scene::Node root = scene::Node::make(NodeKind::Translate);
+    root.children.push_back(scene::Node::make(NodeKind::Sphere));
+    wrapped.root = root;
+    Editor single(wrapped);
+    EXPECT_TRUE(single.remove({0}).empty());
+    EXPECT_EQ(single.scene().root.kind, NodeKind::Union);
+    EXPECT_TRUE(single.scene().root.children.empty());
+}
+
 TEST(EditorTest, AddWrapDuplicateDeleteAndSelection) {
     Editor editor(defaultScene());
     // add into the root union (selection empty), the new node is selected
@@ -89,10 +109,11 @@ TEST(EditorTest, AddWrapDuplicateDeleteAndSelection) {
     EXPECT_TRUE(editor.remove({4}).empty());
     EXPECT_EQ(editor.selection(), NodePath{});
     EXPECT_EQ(editor.scene().root.children.size(), 4u);
-    // deleting the only child of a translate is refused by the loader's rule
-    Problems problems = editor.remove({0, 0});
-    ASSERT_FALSE(problems.empty());
-    EXPECT_EQ(problems[0], "root.children[0].children: translate needs exactly 1 child (got 0)");
+    // deleting the only child of a translate takes the emptied translate too
+    EXPECT_TRUE(editor.remove({0, 0}).empty());
+    EXPECT_EQ(editor.undoLabel(), "Delete sphere and 1 wrapper");
+    EXPECT_EQ(editor.scene().root.children.size(), 3u);
+    EXPECT_EQ(editor.selection(), NodePath{});
     EXPECT_FALSE(editor.remove({}).empty());
     while (editor.undo()) {
     }
