@@ -91,13 +91,18 @@ void BudgetMonitor::check(const Progress& state, std::size_t own_bytes) {
   const std::size_t memory = own_bytes + static_cast<std::size_t>(gmp > 0 ? gmp : 0);
 
   auto give_up = [&](Status status, const std::string& reason) {
-    std::string where = "(" + (*state.stage ? std::string(state.stage) + ", " : std::string()) + "basis " +
-                        std::to_string(state.basis_size) + ", " + std::to_string(state.pairs_left) +
-                        " pairs left)";
+    // Where it was: the stage, then what that stage counts.
+    std::string where = *state.stage ? state.stage : "";
+    auto add = [&where](const std::string& part) { where += (where.empty() ? "" : ", ") + part; };
+    if (state.basis_size || state.pairs_left) {
+      add("basis " + std::to_string(state.basis_size) + ", " + std::to_string(state.pairs_left) + " pairs left");
+    }
+    if (primes_) add(std::to_string(primes_) + (primes_ == 1 ? " prime" : " primes") + " done");
+    if (!where.empty()) where = " (" + where + ")";
     // a cancel is the caller's doing, not the engine giving up
     std::string head = status == Status::cancelled ? "cancelled after " + format_seconds(elapsed)
                                                    : "gave up after " + format_seconds(elapsed) + ": " + reason;
-    throw BudgetExceeded{status, head + " " + where};
+    throw BudgetExceeded{status, head + where};
   };
   if (budget_.cancel && budget_.cancel->cancelled()) give_up(Status::cancelled, {});
   if (budget_.time_limit_seconds && elapsed > *budget_.time_limit_seconds) {

@@ -2,6 +2,7 @@
 
 #include "algebra/division.h"
 #include "algebra/gb_elimination.h"
+#include "algebra/implicit_interpolation.h"
 #include "algebra/ideal_operations.h"
 #include "algebra/polynomial_gcd.h"
 
@@ -172,31 +173,170 @@ std::size_t ImplicitizationResult::term_count() const {
   return terms;
 }
 
+namespace {
+
+// g = a*t + r with a a nonzero constant and r free of t: -r/a, else nullopt.
+std::optional<Polynomial> linear_solution(const Polynomial& g, std::size_t t) {
+  if (g.degree_in(t) != 1) return std::nullopt;
+  std::optional<Rational> a;
+  std::vector<Term> rest;
+  for (const Term& term : g.terms()) {
+    if (term.monomial[t] == 0) {
+      rest.push_back(term);
+    } else if (term.monomial.degree() == 1 && !a) {
+      a = term.coefficient;
+    } else {
+      return std::nullopt;  // t times another variable: the coefficient of t is not constant
+    }
+  }
+  if (!a) return std::nullopt;
+  return Polynomial(g.ring(), std::move(rest)) / -*a;
+}
+
+// <g, 1 - q*y> (or <g>) eliminating y is the saturation <g> : q^oo, which is
+// principal: g without the factors it shares with q. Nullopt for an ideal of
+// another shape.
+std::optional<Polynomial> principal_saturation(const EliminationProblem& problem) {
+  if (problem.eliminated.size() > 1) return std::nullopt;
+  const Ring& ring = *problem.ideal.ring();
+  std::optional<Polynomial> g, q;
+  for (const Polynomial& f : problem.ideal.generators()) {
+    const std::optional<std::size_t> y =
+        problem.eliminated.empty() ? std::nullopt : ring.index_of(problem.eliminated.front());
+    if (!y || !f.contains_variable(*y)) {
+      if (g) return std::nullopt;
+      g = f;
+      continue;
+    }
+    if (q || f.degree_in(*y) != 1) return std::nullopt;
+    std::vector<Term> free, with_y;
+    for (const Term& t : f.terms()) {
+      if (t.monomial[*y] == 0) {
+        free.push_back(t);
+      } else {
+        Term reduced = t;
+        reduced.monomial[*y] = 0;
+        with_y.push_back(std::move(reduced));
+      }
+    }
+    if (!(Polynomial(f.ring(), std::move(free)) == ring.one())) return std::nullopt;
+    q = -Polynomial(f.ring(), std::move(with_y));
+  }
+  if (!g) return std::nullopt;
+  if (q) {
+    for (Polynomial d = gcd(*g, *q); !d.is_constant(); d = gcd(*g, *q)) g = *divide_exact(*g, d);
+  }
+  return g;
+}
+
+}  // namespace
+
+EliminationProblem substitute_linear_parameters(const EliminationProblem& problem) {
+  const RingPtr& ring = problem.ideal.ring();
+  std::vector<Polynomial> generators = problem.ideal.generators();
+  std::vector<std::string> kept;
+  for (const std::string& name : problem.eliminated) {
+    const std::size_t t = *ring->index_of(name);
+    std::optional<Polynomial> value;
+    auto solved = generators.begin();
+    for (; solved != generators.end() && !(value = linear_solution(*solved, t)); ++solved) {
+    }
+    if (!value) {
+      kept.push_back(name);
+      continue;
+    }
+    generators.erase(solved);
+    std::vector<Polynomial> values;
+    for (std::size_t v = 0; v < ring->size(); ++v) values.push_back(v == t ? *value : ring->var(v));
+    std::vector<Polynomial> substituted;
+    for (const Polynomial& g : generators) {
+      Polynomial h = substitute(g, values);
+      if (!h.is_zero()) substituted.push_back(std::move(h));
+    }
+    generators = std::move(substituted);
+  }
+  std::vector<std::string> names = kept;
+  for (const std::string& name : ring->variables()) {
+    if (!contains(problem.eliminated, name)) names.push_back(name);
+  }
+  RingPtr smaller = Ring::make(names, kept.empty() ? MonomialOrder::degrevlex() : MonomialOrder::elimination(kept.size()));
+  std::vector<Polynomial> moved;
+  for (const Polynomial& g : generators) moved.push_back(g.in_ring(smaller));
+  return EliminationProblem{Ideal(smaller, moved), kept};
+}
+
 ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
   EliminationProblem problem = implicitization_ideal(p, options.denominator);
   ImplicitizationResult result;
   result.ring = Ring::make(p.coordinates, coordinate_order(options.order));
+  const bool modular = options.groebner.method != GroebnerMethod::rational;
   std::vector<Polynomial> generators;
-  if (options.order == EliminationOrder::lex || options.groebner.method == GroebnerMethod::rational) {
+  BudgetMonitor monitor(options.groebner.budget);
+  bool done = false, substituted = false;
+  if (options.substitute_linear) {
+    const std::size_t before = problem.eliminated.size();
+    Progress progress;
+    progress.stage = "substitution";
+    run_within_budget(result, monitor, [&] {
+      monitor.check(progress);
+      problem = substitute_linear_parameters(problem);
+    });
+    if (!result.ok()) return result;
+    substituted = problem.eliminated.size() < before;
+  }
+  // Every parameter solved for: what is left (at most the auxiliary y of
+  // Theorem 1.8 to eliminate) is smaller than any interpolation.
+  const bool parameters_left = std::any_of(problem.eliminated.begin(), problem.eliminated.end(),
+                                           [&](const std::string& name) { return contains(p.parameters, name); });
+  // Not when every parameter is solved for: then what is left is smaller
+  // than any interpolation.
+  if (options.interpolate && modular && options.order != EliminationOrder::lex && parameters_left) {
+    run_within_budget(result, monitor, [&] {
+      if (std::optional<Polynomial> f = implicitize_by_interpolation(p, result.ring, monitor, result.stats)) {
+        generators.push_back(std::move(*f));
+        done = true;
+      }
+    });
+    if (!result.ok()) return result;
+    if (done) result.method = "interpolation";
+  }
+  if (!done && !parameters_left) {
+    if (std::optional<Polynomial> g = principal_saturation(problem)) {
+      generators.push_back(g->in_ring(result.ring));
+      result.method = "substitution";
+      done = true;
+    }
+  }
+  if (!done && problem.eliminated.empty()) {
+    GroebnerResult basis = groebner_basis(Ideal(result.ring, problem.ideal.generators()), options.groebner);
+    result.status = basis.status;
+    result.message = basis.message;
+    result.stats = basis.stats;
+    generators = std::move(basis.basis);
+    result.method = "substitution";
+    done = true;
+  }
+  if (!done) result.method = !parameters_left ? "substitution" : substituted ? "substitution+elimination" : "elimination";
+  if (!done && (options.order == EliminationOrder::lex || !modular)) {
     GroebnerResult basis = options.order == EliminationOrder::lex
                                ? lex_elimination(problem, result.ring, options.groebner)
                                : eliminate(problem.ideal, problem.eliminated, options.groebner, result.ring->order());
     result.status = basis.status;
     result.message = basis.message;
     result.stats = basis.stats;
-    result.seconds = basis.seconds;
     generators = std::move(basis.basis);
-  } else {
+  } else if (!done) {
     // A polynomial in the coordinates lies in the elimination ideal exactly
     // when it vanishes on the parametrization, which substitution decides
     // cheaply: the lifted equations are verified that way.
-    BudgetMonitor monitor(options.groebner.budget);
     auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
     run_within_budget(result, monitor, [&] {
       generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
                                            result.stats);
     });
   }
+  result.seconds = monitor.elapsed_seconds();
+  if (!result.ok()) return result;
   if (generators.size() == 1) {
     // One equation is the same under every order, so it is normalized and
     // printed under one: degrevlex.
@@ -208,21 +348,27 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   return result;
 }
 
-Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
+ClearedParametrization clear_denominators(const RationalParametrization& p) {
   // Reduced fractions: then every denominator divides the q of Theorem 1.8,
   // a unit modulo the ideal, which makes "substitutes to 0" equivalent to
   // membership in the elimination ideal (implicitize relies on it).
   Fractions f = prepare(p);
   reduce_fractions(f);
-  // x_i = n_i / d_i = (n_i * q/d_i) / q with q = lcm d_i; with e = deg F,
-  // q^e * F(x) is the polynomial sum over the terms c * x^a of
-  // c * prod (n_i * q/d_i)^{a_i} * q^{e - |a|}.
-  Polynomial q = f.ring->one();
-  for (const Polynomial& den : f.denominators) q = lcm(q, den);
-  std::vector<Polynomial> scaled;  // n_i * q / d_i
+  // x_i = n_i / d_i = (n_i * q/d_i) / q with q = lcm d_i.
+  ClearedParametrization c{f.ring, f.ring->one(), {}, std::move(f.relations)};
+  for (const Polynomial& den : f.denominators) c.common = lcm(c.common, den);
   for (std::size_t i = 0; i < f.numerators.size(); ++i) {
-    scaled.push_back(f.numerators[i] * *divide_exact(q, f.denominators[i]));
+    c.scaled.push_back(f.numerators[i] * *divide_exact(c.common, f.denominators[i]));
   }
+  return c;
+}
+
+Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
+  // With e = deg F, q^e * F(x) is the polynomial sum over the terms c * x^a
+  // of c * prod scaled_i^{a_i} * q^{e - |a|}.
+  const ClearedParametrization f = clear_denominators(p);
+  const Polynomial& q = f.common;
+  const std::vector<Polynomial>& scaled = f.scaled;
   const Ring& source = *implicit.ring();
   std::vector<std::size_t> coordinate_of(source.size());
   for (std::size_t v = 0; v < source.size(); ++v) {

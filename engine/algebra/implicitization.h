@@ -76,6 +76,15 @@ struct ImplicitizationOptions {
   GroebnerOptions groebner;  // budget and method
   DenominatorStrategy denominator = DenominatorStrategy::lcm;
   EliminationOrder order = EliminationOrder::block_degrevlex;
+  /// Solve for the parameters that occur linearly with a constant
+  /// coefficient in an equation and substitute them before any basis
+  /// (substitute_linear_parameters).
+  bool substitute_linear = true;
+  /// A hypersurface (one parameter fewer than coordinates, no relations) by
+  /// interpolation modulo primes (implicit_interpolation.h), unless the
+  /// method is GroebnerMethod::rational or the order is lex (the textbook's
+  /// elimination, kept for comparison). Elimination where it does not apply.
+  bool interpolate = true;
 };
 
 struct ImplicitizationResult {
@@ -93,6 +102,9 @@ struct ImplicitizationResult {
   std::vector<Polynomial> generators;
   GroebnerStats stats;
   double seconds = 0;
+  /// What ran: "interpolation", "substitution" (every parameter solved for;
+  /// a basis of what is left), "substitution+elimination", "elimination".
+  std::string method;
 
   bool ok() const { return status == Status::completed; }
   /// The largest total degree among the generators.
@@ -113,11 +125,31 @@ struct EliminationProblem {
 EliminationProblem implicitization_ideal(const RationalParametrization& parametrization,
                                          DenominatorStrategy denominator = DenominatorStrategy::lcm);
 
+/// The same elimination ideal with fewer variables: while a generator is
+/// a*t + r with t an eliminated variable, a a nonzero constant and r free of
+/// t (x - u, y - v, 2*u + v^2 - x, or (1 + v^2)*x - u of a fraction), t is
+/// replaced by -r/a everywhere and that generator dropped. The ring keeps
+/// the eliminated variables left, then the others, with the elimination
+/// order (degrevlex when none is left).
+EliminationProblem substitute_linear_parameters(const EliminationProblem& problem);
+
 /// Throws std::invalid_argument with one clear line for malformed input
 /// (counts differ, a zero denominator, a coordinate named like a parameter,
 /// a variable that is not a parameter).
 ImplicitizationResult implicitize(const RationalParametrization& parametrization,
                                   const ImplicitizationOptions& options = {});
+
+/// The parametrization over one denominator, in the ring of the parameters
+/// (degrevlex): coordinate i is scaled[i] / common, with common the lcm of
+/// the reduced, monic denominators. (common : scaled[0] : ...) are the
+/// homogeneous coordinates of the image point.
+struct ClearedParametrization {
+  RingPtr ring;
+  Polynomial common;
+  std::vector<Polynomial> scaled;
+  std::vector<Polynomial> relations;
+};
+ClearedParametrization clear_denominators(const RationalParametrization& parametrization);
 
 /// F evaluated on the parametrization, with denominators cleared and reduced
 /// modulo the relations: zero exactly when F vanishes on the parametrized set

@@ -34,6 +34,18 @@ struct NamedParametrization {
 /// half-angle substitution ("/half-angle").
 std::vector<NamedParametrization> classic_parametrizations();
 
+/// CAD-style patches (example_patches.cpp), with fixed pseudo-random small
+/// integer control points and weights: height patches z = p(u,v)/q(u,v),
+/// Bezier patches of bidegree (m, n) (implicit degree 2mn), polynomial and
+/// rational, a quadratic patch with 9-digit coefficients, a rational
+/// Steiner patch and a bilinear rational patch. `max_degree` leaves out the
+/// patches whose implicit degree exceeds it (the bicubic's is 18).
+std::vector<NamedParametrization> patch_parametrizations(unsigned max_degree = 18);
+
+/// A Bezier patch of bidegree (m, n) whose control points (and weights,
+/// when `rational`) come from `seed`: for random tests.
+RationalParametrization bezier_patch(unsigned m, unsigned n, bool rational, unsigned seed);
+
 /// The polynomials as the formula language prints them, for comparisons.
 std::vector<std::string> strings(const std::vector<Polynomial>& polys);
 
