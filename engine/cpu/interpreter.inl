@@ -128,7 +128,7 @@ struct Kernel {
         const program::TraceParams& t = p.trace;
         settings = TraceSettings(t.maxSteps, real(t.maxDistance), real(t.epsilon), real(t.epsilonPerDistance),
                                  t.shadowMode, t.shadowSteps, t.aoSamples, real(t.aoDistance), t.lightingModel,
-                                 static_cast<int>(p.lights.size()), vec3(t.ambientLight), vec3(t.background));
+                                 real(t.stepRelaxation), static_cast<int>(p.lights.size()), vec3(t.ambientLight), vec3(t.background));
         for (const program::LightParams& l : p.lights) {
             lights.push_back(Light(vec3(l.direction), vec3(l.color), real(l.softness)));
         }

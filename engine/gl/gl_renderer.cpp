@@ -27,7 +27,8 @@ namespace {
 const char* const kUniformNames[] = {
     "uParams", "uCameraOrigin", "uCameraForward", "uCameraRight", "uCameraUp", "uTanHalfFov", "uResolution",
     "uSubsample", "uAA", "uMaxSteps", "uMaxDistance", "uEpsilon", "uEpsilonPerDistance", "uShadowMode",
-    "uShadowSteps", "uAoSamples", "uAoDistance", "uLightingModel", "uLightCount", "uAmbientLight", "uBackground",
+    "uShadowSteps", "uAoSamples", "uAoDistance", "uLightingModel", "uStepRelaxation", "uLightCount", "uAmbientLight",
+    "uBackground",
     "uLightDirection", "uLightColor", "uLightSoftness"};
 
 }  // namespace
@@ -111,6 +112,7 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     gl_.Uniform1i(cached.uniform("uAoSamples"), t.aoSamples);
     gl_.Uniform1f(cached.uniform("uAoDistance"), static_cast<float>(t.aoDistance));
     gl_.Uniform1i(cached.uniform("uLightingModel"), t.lightingModel);
+    gl_.Uniform1f(cached.uniform("uStepRelaxation"), static_cast<float>(t.stepRelaxation));
     gl_.Uniform1i(cached.uniform("uLightCount"), static_cast<int>(program.lights.size()));
     vec3("uAmbientLight", t.ambientLight);
     vec3("uBackground", t.background);

@@ -33,6 +33,7 @@ uniform int uShadowMode;
 uniform int uShadowSteps;
 uniform int uAoSamples;
 uniform float uAoDistance;
+uniform float uStepRelaxation;
 uniform int uLightingModel;
 uniform int uLightCount;
 uniform vec3 uAmbientLight;
@@ -61,7 +62,7 @@ constexpr std::string_view kMain = R"(
 void main() {
     Camera camera = Camera(uCameraOrigin, uCameraForward, uCameraRight, uCameraUp, uTanHalfFov);
     TraceSettings settings = TraceSettings(uMaxSteps, uMaxDistance, uEpsilon, uEpsilonPerDistance,
-        uShadowMode, uShadowSteps, uAoSamples, uAoDistance, uLightingModel, uLightCount,
+        uShadowMode, uShadowSteps, uAoSamples, uAoDistance, uLightingModel, uStepRelaxation, uLightCount,
         uAmbientLight, uBackground);
     real px = gl_FragCoord.x + subsampleOffset(uSubsample.x, uAA);
     real py = gl_FragCoord.y + subsampleOffset(uSubsample.y, uAA);

@@ -348,6 +348,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     t.aoSamples = r.aoSamples;
     t.aoDistance = r.aoDistance;
     t.lightingModel = static_cast<int>(r.lighting);
+    t.stepRelaxation = r.stepRelaxation;
     t.ambientLight = scene.environment.ambient;
     t.background = scene.environment.background;
     for (const scene::Light& light : scene.lights) {

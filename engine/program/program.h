@@ -56,6 +56,7 @@ struct TraceParams {
     int aoSamples;
     double aoDistance;
     int lightingModel;  // LIGHTING_*
+    double stepRelaxation;
     glm::dvec3 ambientLight;
     glm::dvec3 background;
 };

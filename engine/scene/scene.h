@@ -82,6 +82,7 @@ struct RenderSettings {
     int aoSamples = 0;               // M; 0 disables ambient occlusion
     double aoDistance = 1.0;         // scene units covered by the AO samples
     LightingModel lighting = LightingModel::BlinnPhong;
+    double stepRelaxation = 1.0;     // omega of over-relaxed primary steps, 1 to 1.9; 1 is plain sphere tracing
 
     bool operator==(const RenderSettings&) const = default;
 };

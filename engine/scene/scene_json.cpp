@@ -60,6 +60,18 @@ public:
         out = v;
     }
 
+    void numberBetween(const json& value, const std::string& path, double minimum, double maximum, double& out) {
+        double v = 0;
+        if (!number(value, path, v)) {
+            return;
+        }
+        if (!(v >= minimum && v <= maximum)) {
+            fail(path, "must be from " + describe(minimum) + " to " + describe(maximum) + " (got " + describe(v) + ")");
+            return;
+        }
+        out = v;
+    }
+
     void integer(const json& value, const std::string& path, int minimum, int maximum, int& out) {
         double v = 0;
         if (!number(value, path, v)) {
@@ -331,6 +343,9 @@ void readRender(Reader& reader, const json& value, const std::string& path, Rend
     });
     object.member("lighting", [&](const json& v, const std::string& p) {
         reader.choice(v, p, kLightingModels, render.lighting);
+    });
+    object.member("step_relaxation", [&](const json& v, const std::string& p) {
+        reader.numberBetween(v, p, 1, 1.9, render.stepRelaxation);
     });
     object.finish("render");
 }
@@ -605,7 +620,8 @@ json sceneToJson(const Scene& scene) {
                      {"shadow_steps", r.shadowSteps},
                      {"ao_samples", r.aoSamples},
                      {"ao_distance", r.aoDistance},
-                     {"lighting", nameOf(kLightingModels, r.lighting)}};
+                     {"lighting", nameOf(kLightingModels, r.lighting)},
+                     {"step_relaxation", r.stepRelaxation}};
     const Environment& e = scene.environment;
     const Ground& g = e.ground;
     out["environment"] = {{"ambient", vec3Json(e.ambient)},

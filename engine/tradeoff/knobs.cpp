@@ -105,6 +105,10 @@ std::vector<Knob> makeKnobs() {
                  [](const Scene& s) { return static_cast<double>(s.render.aa); },
                  [](Scene& s, double v) { s.render.aa = static_cast<int>(v); }, always,
                  [](const Scene& s) { return except({1, 2, 3}, static_cast<double>(s.render.aa)); }});
+    k.push_back({"step_relaxation", {}, false,
+                 [](const Scene& s) { return s.render.stepRelaxation; },
+                 [](Scene& s, double v) { s.render.stepRelaxation = v; }, always,
+                 [](const Scene& s) { return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation); }});
     return k;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <tuple>
 
 #include "tradeoff/analysis.h"
 
@@ -144,6 +145,84 @@ void writeSummary(std::ostringstream& out, const SweepResult& result) {
     out << "\n" << table.str() << "\n";
 }
 
+// Of the results matching `wanted`, the one with the fewest mean steps whose
+// error is within kErrorTolerance of the default's.
+std::optional<size_t> fewestStepsAtEqualError(const SceneResult& scene, size_t backend,
+                                              bool (*wanted)(const SettingResult&)) {
+    double limit = scene.results[0].byBackend[backend].error.display.meanAbs + kErrorTolerance;
+    std::optional<size_t> best;
+    for (size_t i = 1; i < scene.results.size(); ++i) {
+        const Measurement& m = scene.results[i].byBackend[backend];
+        if (!wanted(scene.results[i]) || m.error.display.meanAbs > limit) continue;
+        if (!best || m.meanSteps < scene.results[*best].byBackend[backend].meanSteps) best = i;
+    }
+    return best;
+}
+
+bool relaxedAlone(const SettingResult& r) {
+    return r.setting.knob != nullptr && r.setting.knob->name == "step_relaxation";
+}
+bool relaxedTuned(const SettingResult& r) {
+    return r.setting.label.rfind("tuned:", 0) == 0 && r.setting.scene.render.stepRelaxation > 1.0;
+}
+
+void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
+    std::ostringstream table;
+    table << "| scene | backend | plain: steps | ms | err | relaxation alone | steps | ms | err | tuned, relaxed | "
+             "steps | ms | err |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    struct Ratios {
+        std::vector<double> aloneSteps, aloneTime, tunedSteps, tunedTime;
+    };
+    std::vector<Ratios> ratios(result.backends.size());
+    auto cells = [](const Measurement& m) {
+        return format("%.1f", m.meanSteps) + " | " + milliseconds(m.seconds) + " | " +
+               format("%.3f", m.error.display.meanAbs);
+    };
+    bool any = false;
+    for (size_t b = 0; b < result.backends.size(); ++b) {
+        for (const SceneResult& scene : result.scenes) {
+            if (scene.results.empty() || scene.scene.render.stepRelaxation != 1.0) continue;
+            std::optional<size_t> alone = fewestStepsAtEqualError(scene, b, relaxedAlone);
+            std::optional<size_t> tuned = fewestStepsAtEqualError(scene, b, relaxedTuned);
+            if (!alone && !tuned) continue;
+            any = true;
+            const Measurement& plain = scene.results[0].byBackend[b];
+            table << "| " << scene.name << " | " << result.backends[b] << " | " << cells(plain);
+            for (auto [index, steps, time] : {std::tuple{alone, &Ratios::aloneSteps, &Ratios::aloneTime},
+                                              std::tuple{tuned, &Ratios::tunedSteps, &Ratios::tunedTime}}) {
+                if (!index) {
+                    table << " | none | | |";
+                    continue;
+                }
+                const SettingResult& r = scene.results[*index];
+                const Measurement& m = r.byBackend[b];
+                std::string label = r.setting.label;
+                if (label.rfind("tuned:", 0) == 0) label = label.substr(7);
+                table << " | " << label << " | " << cells(m);
+                (ratios[b].*steps).push_back(m.meanSteps > 0 ? plain.meanSteps / m.meanSteps : 0);
+                (ratios[b].*time).push_back(m.seconds > 0 ? plain.seconds / m.seconds : 0);
+            }
+            table << " |\n";
+        }
+    }
+    if (!any) return;
+    out << "## Relaxed against plain sphere tracing\n\n"
+        << "Plain: the scene's default (plain sphere tracing, today's settings). Relaxation alone: the "
+           "`step_relaxation` value with the fewest primary steps per sub-sample whose mean error is within 1/255 of "
+           "the plain one's. Tuned, relaxed: the tuned setting (each knob's fastest value within "
+        << "the tuning slack, combined) when it relaxes steps, under the same error condition. Ratios are plain "
+           "over relaxed, medians over the scenes that have such a setting.\n\n";
+    for (size_t b = 0; b < result.backends.size(); ++b) {
+        const Ratios& r = ratios[b];
+        out << "- " << result.backends[b] << ": relaxation alone (" << r.aloneSteps.size() << " scenes): "
+            << format("%.2f", medianOf(r.aloneSteps)) << "x fewer steps, " << format("%.2f", medianOf(r.aloneTime))
+            << "x faster; tuned and relaxed (" << r.tunedSteps.size() << " scenes): "
+            << format("%.2f", medianOf(r.tunedSteps)) << "x fewer steps, " << format("%.2f", medianOf(r.tunedTime))
+            << "x faster.\n";
+    }
+    out << "\n" << table.str() << "\n";
+}
+
 void writeSkipped(std::ostringstream& out, const SweepResult& result) {
     if (!result.budgetExhausted) return;
     out << "**The budget ran out**: ";
@@ -171,6 +250,7 @@ std::string writeReport(const SweepResult& result, const ReportContext& context)
            "both faster and closer to the reference; each knob is varied alone around the scene's default.\n\n";
     writeSkipped(out, result);
     writeSummary(out, result);
+    writeSpeedup(out, result);
     for (const SceneResult& scene : result.scenes) writeScene(out, result, scene, context);
     return out.str();
 }

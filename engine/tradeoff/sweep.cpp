@@ -82,6 +82,24 @@ scene::Scene atMeasuredSize(scene::Scene scene, const SweepOptions& options) {
     return scene;
 }
 
+// The one-knob results combined (sweep_plan.h: tunedSetting).
+std::optional<Setting> tuned(const SceneResult& sr, const SweepOptions& options) {
+    if (sr.results.size() < 2) return std::nullopt;
+    auto seconds = [](const SettingResult& r) {
+        double sum = 0;
+        for (const Measurement& m : r.byBackend) sum += m.seconds;
+        return sum;
+    };
+    auto error = [](const SettingResult& r) {
+        double worst = 0;
+        for (const Measurement& m : r.byBackend) worst = std::max(worst, m.error.display.meanAbs);
+        return worst;
+    };
+    std::vector<TuningCandidate> candidates;
+    for (const SettingResult& r : sr.results) candidates.push_back({&r.setting, seconds(r), error(r)});
+    return tunedSetting(sr.scene, candidates, seconds(sr.results[0]), error(sr.results[0]), options.tuningSlack);
+}
+
 // Most AA any planned setting uses: the reference resolves at least that finely.
 int largestAa(const SweepPlan& plan) {
     int aa = 1;
@@ -100,7 +118,8 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
     std::vector<SweepPlan> plans;
     for (const SceneInput& input : scenes) {
         plans.push_back(planSweep(atMeasuredSize(input.scene, options), knobs));
-        sweep.progress_.settingsTotal += 1 + static_cast<int>(plans.back().settings.size());
+        // the reference, the planned settings, and up to two tuned ones
+        sweep.progress_.settingsTotal += 3 + static_cast<int>(plans.back().settings.size());
     }
     sweep.progress_.scenesTotal = static_cast<int>(scenes.size());
 
@@ -174,6 +193,31 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
             }
             sr.results.push_back(std::move(measured->first));
             sweep.advance(sr.name + ": " + setting.label, true);
+        }
+        for (int extra = 0; extra < 2 && !result.cancelled; ++extra) {
+            std::optional<Setting> setting = extra == 0 ? tuned(sr, options)
+                                                        : (sr.results.back().setting.label.rfind("tuned:", 0) == 0
+                                                               ? withoutRelaxation(sr.scene, sr.results.back().setting)
+                                                               : std::nullopt);
+            if (!setting || sr.results.empty()) {
+                sweep.advance(sr.name + ": tuned", false);
+                continue;
+            }
+            if (sweep.cancelled() || sweep.outOfTime()) {
+                result.cancelled = sweep.cancelled();
+                result.budgetExhausted = result.budgetExhausted || !result.cancelled;
+                if (!result.cancelled) sr.skipped.push_back(setting->label);
+                sweep.advance(sr.name + ": " + setting->label, false);
+                continue;
+            }
+            sweep.report(sr.name + ": " + setting->label);
+            auto measured = sweep.measure(*setting, reference->frame);
+            if (!measured) {
+                result.cancelled = true;
+                break;
+            }
+            sr.results.push_back(std::move(measured->first));
+            sweep.advance(sr.name + ": " + setting->label, true);
         }
         ++sweep.progress_.scenesDone;
     }

@@ -39,6 +39,10 @@ struct SweepOptions {
     int height = 180;
     int repetitions = 3;  // timed renders per setting and backend; the median is reported
     double budgetSeconds = std::numeric_limits<double>::infinity();  // wall time; then the rest is skipped
+    // After the one-knob settings, a "tuned" setting combines each knob's fastest
+    // value within this many levels of 255 (mean) of the default's error; when
+    // it relaxes steps, the same without relaxation is measured too.
+    double tuningSlack = 0.5;
     ReferenceOptions reference;
     std::filesystem::path cacheDir;
     const std::atomic<bool>* cancel = nullptr;

@@ -93,4 +93,38 @@ SweepPlan planSweep(const scene::Scene& base, const std::vector<KnobRequest>& re
     return plan;
 }
 
+std::optional<Setting> tunedSetting(const scene::Scene& base, const std::vector<TuningCandidate>& candidates,
+                                    double defaultSeconds, double defaultError, double slack) {
+    std::vector<const TuningCandidate*> chosen;  // one per knob, in the order the knobs come
+    for (const TuningCandidate& c : candidates) {
+        if (c.setting->knob == nullptr || c.error > defaultError + slack || !(c.seconds < defaultSeconds)) continue;
+        auto same = std::find_if(chosen.begin(), chosen.end(),
+                                 [&](const TuningCandidate* o) { return o->setting->knob == c.setting->knob; });
+        if (same == chosen.end()) {
+            chosen.push_back(&c);
+        } else if (c.seconds < (*same)->seconds) {
+            *same = &c;
+        }
+    }
+    if (chosen.empty()) return std::nullopt;
+    Setting tuned{nullptr, 0, "tuned:", base};
+    for (const TuningCandidate* c : chosen) {
+        c->setting->knob->set(tuned.scene, c->setting->value);
+        tuned.label += " " + c->setting->label;
+    }
+    return tuned;
+}
+
+std::optional<Setting> withoutRelaxation(const scene::Scene& base, const Setting& tuned) {
+    if (tuned.scene.render.stepRelaxation == base.render.stepRelaxation) return std::nullopt;
+    Setting plain = tuned;
+    plain.scene.render.stepRelaxation = base.render.stepRelaxation;
+    plain.label = "tuned, plain steps:" + tuned.label.substr(tuned.label.find(':') + 1);
+    std::string relaxed = " step_relaxation=";
+    size_t at = plain.label.find(relaxed);
+    if (at != std::string::npos) plain.label.erase(at, plain.label.find(' ', at + 1) - at);
+    if (plain.scene == base) return std::nullopt;  // relaxation was all the tuning: that is the default
+    return plain;
+}
+
 }  // namespace sdfwb::tradeoff

@@ -111,5 +111,35 @@ TEST(SweepPlan, ValuesTheFormatRejectsAreErrorsWhenGivenAndDroppedAsDefaults) {
     EXPECT_EQ(labels(plan), (std::vector<std::string>{"default", "max_steps=2000", "max_steps=4000"}));
 }
 
+TEST(TunedSetting, CombinesEachKnobsFastestValueWithinTheSlack) {
+    scene::Scene base = sceneWith(4, scene::ShadowMode::Soft);
+    SweepPlan plan = planSweep(base, parseKnobRequests({"max_steps=64,128", "shadow_steps=16,32", "aa=2",
+                                                        "step_relaxation=1.5"}));
+    ASSERT_EQ(plan.settings.size(), 7u);
+    // default: 10 s at error 1.0
+    std::vector<TuningCandidate> c = {{&plan.settings[0], 10, 1.0}, {&plan.settings[1], 6, 1.2},
+                                      {&plan.settings[2], 8, 1.1},  {&plan.settings[3], 5, 3.0},
+                                      {&plan.settings[4], 9, 1.4},  {&plan.settings[5], 20, 0.5},
+                                      {&plan.settings[6], 9.5, 1.0}};
+    std::optional<Setting> tuned = tunedSetting(base, c, 10, 1.0, 0.5);
+    ASSERT_TRUE(tuned);
+    // max_steps=64 (fastest within 1.5), shadow_steps=32 (16 is too far off), no aa (slower), relaxation
+    EXPECT_EQ(tuned->label, "tuned: max_steps=64 shadow_steps=32 step_relaxation=1.5");
+    EXPECT_EQ(tuned->scene.render.maxSteps, 64);
+    EXPECT_EQ(tuned->scene.render.shadowSteps, 32);
+    EXPECT_EQ(tuned->scene.render.aa, 1);
+    EXPECT_EQ(tuned->scene.render.stepRelaxation, 1.5);
+    std::optional<Setting> plain = withoutRelaxation(base, *tuned);
+    ASSERT_TRUE(plain);
+    EXPECT_EQ(plain->label, "tuned, plain steps: max_steps=64 shadow_steps=32");
+    EXPECT_EQ(plain->scene.render.stepRelaxation, 1.0);
+    EXPECT_EQ(plain->scene.render.shadowSteps, 32);
+    EXPECT_FALSE(withoutRelaxation(base, *plain));
+    std::optional<Setting> relaxedOnly = tunedSetting(base, c, 10, 1.0, 0.0);
+    EXPECT_FALSE(withoutRelaxation(base, *relaxedOnly));  // that would be the default again
+    EXPECT_EQ(tunedSetting(base, c, 10, 1.0, 0.0)->label, "tuned: step_relaxation=1.5");  // as close, faster
+    EXPECT_FALSE(tunedSetting(base, c, 9, 1.0, 0.0));
+}
+
 }  // namespace
 }  // namespace sdfwb::tradeoff

@@ -44,6 +44,7 @@ struct TraceSettings {
     int aoSamples;           // M; 0 disables ambient occlusion
     real aoDistance;         // distance covered by the M samples along the normal
     int lightingModel;
+    real relaxation;         // omega of over-relaxed primary steps, in [1, 2); 1 is plain sphere tracing
     int lightCount;
     vec3 ambientLight;       // L_A
     vec3 background;
@@ -58,6 +59,9 @@ struct TraceState {
     vec3 rayDirection;
     real t;
     real lastDistance;  // the previous distance of the current march (0 before the first)
+    real marchRadius;   // the primary march's last safe step (its unbounding sphere's radius)
+    real marchStep;     // and the step it took from there: omega times marchRadius when relaxed
+    bool relaxationOff; // a relaxed step overshot: plain steps for the rest of the ray
     vec3 hitPoint;
     real hitEpsilon;
     Material material;
@@ -75,7 +79,7 @@ struct TraceState {
 SHARED_FN TraceState traceBegin(Ray ray) {
     Material none = Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)));
     return TraceState(PHASE_MARCH, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
-                      vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
+                      real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       real(0), real(0), real(1), 0, real(0), real(1), vec3(real(0)));
 }
 
@@ -194,9 +198,34 @@ SHARED_FN bool convergesWithin(real t, real lastDistance, Sample field, TraceSet
     return t + field.step / (real(1) - ratio) <= settings.maxDistance;
 }
 
+// Out of distance or of steps: the background.
+SHARED_FN TraceState endMarchIfSpent(TraceState s, TraceSettings settings) {
+    if (s.t > settings.maxDistance || s.steps >= settings.maxSteps) {
+        s.color = settings.background;
+        s.phase = PHASE_DONE;
+    }
+    return s;
+}
+
+// Over-relaxed sphere tracing (Keinert et al. 2014): a step of omega times the
+// safe step r leaves the previous point's unbounding sphere; as long as the new
+// point's sphere overlaps it (r_prev + |r| >= step) the segment between them is
+// clear of surfaces. When they do not overlap, the ray may have crossed one.
+SHARED_FN bool relaxedStepOvershot(TraceState s, Sample field) {
+    return s.marchStep > s.marchRadius && s.marchRadius + abs(field.step) < s.marchStep;
+}
+
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
     s.steps = s.steps + 1;
     real epsilon = hitEpsilonAt(settings, s.t);
+    if (relaxedStepOvershot(s, field)) {
+        // back to the plain step from the previous point, which its sphere
+        // keeps safe, and plain steps from now on (this evaluation is spent)
+        s.t = s.t - s.marchStep + s.marchRadius;
+        s.marchStep = s.marchRadius;
+        s.relaxationOff = true;
+        return endMarchIfSpent(s, settings);
+    }
     if (field.d < -epsilon && field.step < real(0) && s.t > real(0) && s.steps < settings.maxSteps) {
         // A bound such as |F| / |grad F| can exceed the distance, so a step
         // can end inside the solid; a hit there would start its shadow rays
@@ -206,6 +235,8 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         // other sign than its distance: then the point is taken as it is.)
         s.t = max(s.t + field.step, real(0));
         s.lastDistance = field.d;
+        s.marchRadius = real(0);
+        s.marchStep = real(0);
         return s;
     }
     if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s.t, s.lastDistance, field, settings))) {
@@ -219,13 +250,16 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         return s;
     }
     // the safe step, and at least a fraction of epsilon so the march never stalls
-    s.t = s.t + max(field.step, real(0.25) * epsilon);
-    s.lastDistance = field.d;
-    if (s.t > settings.maxDistance || s.steps >= settings.maxSteps) {
-        s.color = settings.background;
-        s.phase = PHASE_DONE;
+    real radius = max(field.step, real(0.25) * epsilon);
+    real step = s.relaxationOff ? radius : radius * settings.relaxation;
+    if (s.t + step > settings.maxDistance) {
+        step = radius;  // a relaxed step past max distance would end the ray unchecked
     }
-    return s;
+    s.t = s.t + step;
+    s.marchRadius = radius;
+    s.marchStep = step;
+    s.lastDistance = field.d;
+    return endMarchIfSpent(s, settings);
 }
 
 SHARED_FN TraceState advanceNormal(TraceState s, Sample field, TraceSettings settings) {
