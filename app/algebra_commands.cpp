@@ -66,12 +66,12 @@ int guarded(const char* command, Body body) {
 
 CLI::App* addImplicitizeCommand(CLI::App& app, ImplicitizeArguments& a) {
     CLI::App* command = app.add_subcommand(
-        "implicitize", "Implicit equation of a parametric curve or surface, by Groebner-basis elimination");
+        "implicitize", "Implicit equation of a parametric curve or surface (substitution, interpolation or Groebner-basis elimination)");
     command->add_option("equations", a.equations,
                         "Parametric equations, e.g. \"x = u*v; y = v; z = u^2\"; parameters are any names other "
                         "than x, y, z; sin/cos of rational multiples of parameters are converted exactly")
         ->required();
-    command->add_flag("--json", a.json, "Print {\"generators\", \"degree\", \"terms\", \"seconds\"}");
+    command->add_flag("--json", a.json, "Print {\"generators\", \"degree\", \"terms\", \"method\", \"seconds\"}");
     command->add_option("--trig", a.trig, "Trigonometric conversion: half-angle substitution or cos-sin variables")
         ->check(CLI::IsMember({"half-angle", "cos-sin"}))
         ->capture_default_str();
@@ -116,6 +116,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
             nlohmann::ordered_json out = {{"generators", polynomialsJson(result.generators)},
                                           {"degree", result.degree()},
                                           {"terms", result.term_count()},
+                                          {"method", result.method},
                                           {"seconds", result.seconds}};
             std::cout << out.dump() << "\n";
             return 0;
@@ -130,7 +131,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
             for (const algebra::Polynomial& g : result.generators) std::cout << g.to_string() << " = 0\n";
         }
         std::cout << "degree " << result.degree() << ", " << result.term_count() << " terms, " << result.seconds
-                  << " s\n";
+                  << " s by " << result.method << "\n";
         return 0;
     });
 }

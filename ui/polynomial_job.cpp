@@ -172,7 +172,11 @@ void PolynomialJob::start(PolynomialRequest request) {
     std::shared_ptr<Shared> shared = shared_;
     budget.on_progress = [shared](const algebra::Progress& p) {
         std::lock_guard lock(shared->mutex);
-        shared->progress = {p.elapsed_seconds, p.basis_size, p.pairs_left, p.stage};
+        // the modular stages (interpolation, lifting, verification) count
+        // primes, which the panel shows with the stage
+        std::string stage = p.stage;
+        if (p.primes > 0) stage += " (" + std::to_string(p.primes) + (p.primes == 1 ? " prime)" : " primes)");
+        shared->progress = {p.elapsed_seconds, p.basis_size, p.pairs_left, std::move(stage)};
     };
     worker_ = std::thread([shared, request = std::move(request), budget = std::move(budget)] {
         PolynomialOutcome outcome = computePolynomial(request, budget);

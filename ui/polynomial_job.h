@@ -63,7 +63,7 @@ struct PolynomialProgress {
     double elapsedSeconds = 0;  // since start(), live while running
     std::size_t basisSize = 0;
     std::size_t pairsLeft = 0;
-    std::string stage;
+    std::string stage;  // "buchberger", "interpolation (3 primes)", ...
 };
 
 // One computation at a time. The worker never touches the scene: the UI

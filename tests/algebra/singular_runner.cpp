@@ -67,7 +67,17 @@ std::vector<std::string> var_names(const char* prefix, std::size_t n) {
   return names;
 }
 
-// Reads "TIME <wall ms> <cpu ms>" and the lines between BEGIN and END.
+// Singular's CPU timer counts in steps of 10 ms: a command is repeated until
+// it has run 100 ms of CPU (at most 1000 times), and the times divided by
+// the repetitions. kRepeatUntil opens the loop; the script closes it with
+// "reps++; }" and prints "TIME <wall ms> <cpu ms> <repetitions>".
+constexpr const char* kRepeatUntil =
+    "int t = rtimer;\nint c = timer;\nint reps = 0;\n"
+    "while (reps == 0 || (timer - c < 100 && reps < 1000)) {\n";
+constexpr const char* kPrintTime =
+    "print(\"TIME \" + string(rtimer - t) + \" \" + string(timer - c) + \" \" + string(reps));\n";
+
+// Reads "TIME <wall ms> <cpu ms> <repetitions>" and the lines between BEGIN and END.
 SingularResult read_output(const std::string& output, const RingPtr& ring, const char* prefix,
                            std::string error) {
   SingularResult result;
@@ -79,10 +89,10 @@ SingularResult read_output(const std::string& output, const RingPtr& ring, const
     while (std::getline(in, line)) {
       if (line.rfind("TIME ", 0) == 0) {
         std::istringstream times(line.substr(5));
-        double wall_ms = 0, cpu_ms = 0;
-        times >> wall_ms >> cpu_ms;
-        result.seconds = wall_ms / 1000.0;
-        result.cpu_seconds = cpu_ms / 1000.0;
+        double wall_ms = 0, cpu_ms = 0, repetitions = 1;
+        times >> wall_ms >> cpu_ms >> repetitions;
+        result.seconds = wall_ms / 1000.0 / repetitions;
+        result.cpu_seconds = cpu_ms / 1000.0 / repetitions;
       } else if (line == "BEGIN") {
         inside = true;
       } else if (line == "END") {
@@ -222,8 +232,10 @@ SingularResult singular_std(const Ideal& ideal, double timeout_seconds, const st
     script += (k ? ",\n  " : "") + as_singular(ideal.generators()[k], named);
   }
   if (ideal.generators().empty()) script += "0";
-  script += ";\nint t = rtimer;\nint c = timer;\nideal g = " + command + "(i);\n";
-  script += "print(\"TIME \" + string(rtimer - t) + \" \" + string(timer - c));\n";
+  script += ";\nideal g;\n";
+  script += kRepeatUntil;
+  script += "  g = " + command + "(i);\n  reps++;\n}\n";
+  script += kPrintTime;
   script += kPrintBasis;
   script += "quit;\n";
   std::string error;
@@ -259,10 +271,12 @@ SingularResult singular_eliminate(const Ideal& ideal, const std::vector<std::str
   for (std::size_t k = 0; k < ideal.generators().size(); ++k) {
     script += (k ? ",\n  " : "") + Polynomial(named, ideal.generators()[k].terms()).to_string();
   }
-  script += ";\nint t = rtimer;\nint c = timer;\nideal el = eliminate(i, " + product + ");\nring s = 0, (";
+  script += ";\nideal el;\nring s = 0, (";
   for (std::size_t j = 0; j < target->size(); ++j) script += (j ? "," : "") + std::string("w") + std::to_string(j);
-  script += "), " + *target_order + ";\nshort = 0;\noption(redSB);\nideal g = std(imap(r, el));\n";
-  script += "print(\"TIME \" + string(rtimer - t) + \" \" + string(timer - c));\n";
+  script += "), " + *target_order + ";\nshort = 0;\noption(redSB);\nideal g;\n";
+  script += kRepeatUntil;
+  script += "  setring r;\n  el = eliminate(i, " + product + ");\n  setring s;\n  g = std(imap(r, el));\n  reps++;\n}\n";
+  script += kPrintTime;
   script += kPrintBasis;
   script += "quit;\n";
   std::string error;

@@ -19,7 +19,8 @@ struct SingularResult {
   std::string error;               // why it failed (timeout, parse error, ...)
   std::vector<Polynomial> basis;   // monic, sorted by increasing leading monomial
   double seconds = 0;              // Singular's own wall-clock time for the command
-  double cpu_seconds = 0;          // and its CPU time
+  double cpu_seconds = 0;          // and its CPU time (each the mean of enough repetitions
+                                   // for 100 ms of CPU: its timer counts in 10 ms steps)
 };
 
 /// Reduced Groebner basis by Singular (option redSB) in the ideal's ring and

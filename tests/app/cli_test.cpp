@@ -142,7 +142,9 @@ TEST_F(Cli, ImplicitizePrintsTheEquationAndItsJson) {
     EXPECT_EQ(text.output.substr(0, text.output.find('\n')), "y^2*z - x^2 = 0");
     ProcessResult json = run("implicitize \"x = u*v; y = v; z = u^2\" --json");
     ASSERT_EQ(json.exitCode, 0) << json.output;
-    EXPECT_EQ(json.output.find("{\"generators\":[\"y^2*z - x^2\"],\"degree\":3,\"terms\":2,\"seconds\":"), 0u)
+    EXPECT_EQ(json.output.find("{\"generators\":[\"y^2*z - x^2\"],\"degree\":3,\"terms\":2,"
+                               "\"method\":\"interpolation\",\"seconds\":"),
+              0u)
         << json.output;
 }
 
