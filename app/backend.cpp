@@ -2,56 +2,40 @@
 
 #include <chrono>
 
-#include "gl/gl_renderer.h"
+#include "cpu/cpu_backend.h"
+#include "gl/gl_backend.h"
 #include "gl/shader_generator.h"
-#include "glcontext/osmesa_context.h"
 #include "io/atomic_file.h"
 
 namespace sdfwb::app {
-namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-BackendResult renderGl(const program::Program& program, const BackendRequest& request) {
-    auto start = std::chrono::steady_clock::now();
-    if (!request.dumpShader.empty()) {
-        io::writeTextAtomically(request.dumpShader, gl::generateFragmentShader(program));
+std::unique_ptr<render::Backend> makeBackend(Backend kind, glcontext::GlContext* context) {
+    switch (kind) {
+    case Backend::Cpu: return std::make_unique<cpu::CpuBackend>();
+    case Backend::Gl: return context ? std::make_unique<gl::GlBackend>(*context) : gl::GlBackend::headless();
     }
-    auto context = glcontext::OsMesaContext::create();
-    gl::GlRenderer renderer(context->gl());
-    renderer.prepare(program);
-    gl::GlRenderControl control;
-    control.cancel = request.cancel;
-    control.progress = request.progress;
-    gl::GlRenderOutcome outcome = renderer.render(program, control);
-    BackendResult result;
-    result.frame = std::move(outcome.frame);
-    result.cancelled = outcome.cancelled;
-    result.compileSeconds = renderer.counters().lastCompileSeconds;
-    result.glRenderer = context->info().renderer;
-    result.seconds = secondsSince(start);
-    return result;
+    throw std::logic_error("makeBackend: unknown backend");
 }
-
-}  // namespace
 
 BackendResult renderWithBackend(const program::Program& program, const BackendRequest& request) {
-    if (request.backend == Backend::Gl) {
-        return renderGl(program, request);
-    }
     auto start = std::chrono::steady_clock::now();
-    cpu::RenderControl control;
+    if (request.backend == Backend::Gl && !request.dumpShader.empty()) {
+        io::writeTextAtomically(request.dumpShader, gl::generateFragmentShader(program));
+    }
+    std::unique_ptr<render::Backend> backend = makeBackend(request.backend);
+    backend->prepare(program);
+    render::RenderControl control;
     control.threads = request.threads;
     control.precision = request.precision;
     control.cancel = request.cancel;
     control.progress = request.progress;
-    cpu::RenderOutcome outcome = cpu::renderCpu(program, control);
+    render::RenderOutcome outcome = backend->render(program, control);
     BackendResult result;
     result.frame = std::move(outcome.frame);
     result.cancelled = outcome.cancelled;
-    result.seconds = secondsSince(start);
+    result.compileSeconds = backend->lastPrepareSeconds();
+    result.device = backend->device();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

@@ -1,23 +1,32 @@
 #pragma once
-// Rendering a compiled scene with either backend, for the command-line tools.
+// Choosing a backend (the one place that names both) and rendering a
+// compiled scene with it, for the command-line tools and the snapshot export.
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 
-#include "cpu/cpu_renderer.h"
+#include "glcontext/gl_context.h"
 #include "image/image.h"
 #include "program/program.h"
+#include "render/render_backend.h"
 
 namespace sdfwb::app {
 
 enum class Backend { Cpu, Gl };
 
+// The CPU reference, or the GL backend rendering in `context` (current on
+// the calling thread for the backend's life) or, without one, in a headless
+// OSMesa context of its own. Throws (glcontext::GlError) with one line naming
+// the cause when no GL context can be made.
+std::unique_ptr<render::Backend> makeBackend(Backend kind, glcontext::GlContext* context = nullptr);
+
 struct BackendRequest {
     Backend backend = Backend::Cpu;
-    int threads = 0;                                 // cpu
-    cpu::Precision precision = cpu::Precision::Float;  // cpu
-    std::string dumpShader;                          // gl: write the generated shader here
+    int threads = 0;                                       // cpu
+    render::Precision precision = render::Precision::Float;  // cpu
+    std::string dumpShader;                                // gl: write the generated shader here
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(int done, int total)> progress;
 };
@@ -27,7 +36,7 @@ struct BackendResult {
     bool cancelled = false;
     double seconds = 0;         // the whole render, shader build included
     double compileSeconds = 0;  // gl: generating and building the shader
-    std::string glRenderer;     // gl: GL_RENDERER of the headless context
+    std::string device;         // the backend's device (GL_RENDERER for gl)
 };
 
 // Throws std::runtime_error (or glcontext::GlError) with one line naming the cause

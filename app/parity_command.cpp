@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/backend.h"
 #include "app/scene_source.h"
 #include "app/size_argument.h"
-#include "glcontext/osmesa_context.h"
 #include "io/atomic_file.h"
 #include "parity/parity.h"
 #include "scene/scene_json.h"
@@ -37,17 +37,16 @@ int runParity(const ParityArguments& a) {
         if (files.empty()) {
             throw std::runtime_error("no scene files found in " + paths.front());
         }
-        auto context = glcontext::OsMesaContext::create();
-        gl::GlRenderer renderer(context->gl());
+        std::unique_ptr<render::Backend> cpu = makeBackend(Backend::Cpu), gl = makeBackend(Backend::Gl);
         bool anyHard = std::any_of(files.begin(), files.end(), isHardCase);
         std::string table = parity::tableHeader(anyHard);
-        std::cout << "GL renderer: " << context->info().renderer << "\n" << table << std::flush;
+        std::cout << "GL renderer: " << gl->device() << "\n" << table << std::flush;
         bool allPass = true;
         std::string polynomialNotes;
         for (const auto& file : files) {
             scene::Scene scene = scene::loadSceneFile(file);
             parity::ParityOptions options{.width = width, .height = height, .aa = a.aa, .reference = isHardCase(file)};
-            parity::ParityResult result = parity::measureParity(scene, renderer, options);
+            parity::ParityResult result = parity::measureParity(scene, *cpu, *gl, options);
             std::string name = std::filesystem::relative(file).string();
             std::string row = parity::tableRow(name, result, anyHard);
             std::cout << row << std::flush;
@@ -62,7 +61,7 @@ int runParity(const ParityArguments& a) {
             std::cout << "\n" << polynomialNotes;
         }
         if (!a.report.empty()) {
-            io::writeTextAtomically(a.report, "GL renderer: " + context->info().renderer + "\n\n" + table +
+            io::writeTextAtomically(a.report, "GL renderer: " + gl->device() + "\n\n" + table +
                                                   (polynomialNotes.empty() ? "" : "\n" + polynomialNotes));
         }
         return allPass ? 0 : 1;

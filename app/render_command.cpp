@@ -63,7 +63,7 @@ int runRender(const RenderArguments& a) {
         BackendRequest request;
         request.backend = a.backend == "gl" ? Backend::Gl : Backend::Cpu;
         request.threads = a.threads;
-        request.precision = a.precision == "double" ? cpu::Precision::Double : cpu::Precision::Float;
+        request.precision = a.precision == "double" ? render::Precision::Double : render::Precision::Float;
         request.cancel = &interrupted;
         request.dumpShader = a.dumpShader;
         ProgressBar bar("rendering");
@@ -94,7 +94,7 @@ int runRender(const RenderArguments& a) {
         if (a.stats) {
             image::FrameStats stats = image::frameStats(outcome.frame);
             std::printf("backend %s (%s), %dx%d aa %d\n", a.backend.c_str(),
-                        a.backend == "gl" ? outcome.glRenderer.c_str() : a.precision.c_str(), program.width,
+                        a.backend == "gl" ? outcome.device.c_str() : a.precision.c_str(), program.width,
                         program.height, program.aa);
             if (a.backend == "gl") {
                 std::printf("shader compile %.3f s (included in time)\n", outcome.compileSeconds);

@@ -46,7 +46,7 @@ std::vector<std::uint8_t> DisplayTexture::stretched(int width, int height) const
     return out;
 }
 
-image::Frame cropFrame(const image::Frame& frame, const gl::TileRect& rect) {
+image::Frame cropFrame(const image::Frame& frame, const render::TileRect& rect) {
     image::Frame out;
     out.color = image::Image(rect.w, rect.h);
     out.steps.resize(out.color.pixelCount());
@@ -61,7 +61,7 @@ image::Frame cropFrame(const image::Frame& frame, const gl::TileRect& rect) {
     return out;
 }
 
-void DisplayTexture::upload(const image::Frame& frame, const gl::TileRect& rect, int scale, bool heat,
+void DisplayTexture::upload(const image::Frame& frame, const render::TileRect& rect, int scale, bool heat,
                             double maxSteps) {
     image::Frame tile = cropFrame(frame, rect);
     std::vector<std::uint8_t> bytes = image::encodeSrgb8(heat ? image::stepHeatImage(tile, maxSteps) : tile.color);

@@ -6,9 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "gl/progressive_render.h"
+#include "glcontext/gl_functions.h"
 #include "glcontext/gl_object.h"
 #include "image/image.h"
+#include "render/tiles.h"
 
 namespace sdfwb::app::gui {
 
@@ -22,7 +23,7 @@ public:
     // Uploads `rect` of `frame`, each pixel repeated `scale` x `scale` times
     // (a reduced-resolution preview fills the full-size texture). With
     // `heat`, the step-count heat image instead of the colour.
-    void upload(const image::Frame& frame, const gl::TileRect& rect, int scale, bool heat, double maxSteps);
+    void upload(const image::Frame& frame, const render::TileRect& rect, int scale, bool heat, double maxSteps);
     // Uploads a whole image of the texture's size.
     void upload(const image::Image& image);
 
@@ -41,6 +42,6 @@ private:
 };
 
 // The part `rect` of `frame` as a frame of its own.
-image::Frame cropFrame(const image::Frame& frame, const gl::TileRect& rect);
+image::Frame cropFrame(const image::Frame& frame, const render::TileRect& rect);
 
 }  // namespace sdfwb::app::gui

@@ -1,82 +1,83 @@
 #include "app/gui/snapshot_export.h"
 
 #include <chrono>
-#include <utility>
 #include <sstream>
+#include <utility>
 
-#include "cpu/cpu_renderer.h"
-#include "gl/gl_renderer.h"
+#include "app/backend.h"
 #include "image/image_io.h"
 #include "program/compile_scene.h"
 
 namespace sdfwb::app::gui {
+namespace {
+
+// The job's body: renders and writes the file, returns the one-line outcome.
+std::string exportSnapshot(const scene::Scene& scene, const SnapshotSettings& chosen, glcontext::GlContext* context,
+                           jobs::Job& job) {
+    try {
+        image::checkWritableFormat(chosen.path);
+        auto start = std::chrono::steady_clock::now();
+        program::Program program = program::compileScene(scene, {chosen.width, chosen.height, chosen.aa});
+        std::unique_ptr<render::Backend> backend = makeBackend(chosen.gl ? Backend::Gl : Backend::Cpu, context);
+        render::RenderControl control;
+        control.cancel = &job.cancelFlag();
+        control.progress = [&job](int done, int total) { job.setProgress(static_cast<double>(done) / total); };
+        render::RenderOutcome result = backend->render(program, control);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (result.cancelled) return "snapshot cancelled; nothing written";
+        image::writeImage(chosen.path, result.frame.color,
+                          {{"sdfwb:scene", scene.name}, {"sdfwb:backend", backend->name()}});
+        std::ostringstream text;
+        text.precision(3);
+        text << "wrote " << chosen.path << " (" << chosen.width << "x" << chosen.height << ", AA " << chosen.aa
+             << ", " << seconds << " s)";
+        return text.str();
+    } catch (const std::exception& error) {
+        return std::string("snapshot failed: ") + error.what();
+    }
+}
+
+}  // namespace
 
 SnapshotExport::~SnapshotExport() {
-    cancel_ = true;
-    if (worker_.joinable()) worker_.join();
+    cancel();
+    queue_.reset();
 }
 
 void SnapshotExport::start(const scene::Scene& scene, const SnapshotSettings& chosen,
                            std::unique_ptr<glcontext::GlContext> shared) {
-    if (running_) return;
+    if (running()) return;
     poll();
-    if (worker_.joinable()) worker_.join();
     context_ = std::move(shared);
-    running_ = true;
-    cancel_ = false;
-    progress_ = 0.0;
-    worker_ = std::thread([this, scene, chosen] {
-        std::string outcome;
-        try {
-            image::checkWritableFormat(chosen.path);
-            auto start = std::chrono::steady_clock::now();
-            program::Program program = program::compileScene(scene, {chosen.width, chosen.height, chosen.aa});
-            auto progress = [this](int done, int total) { progress_ = static_cast<double>(done) / total; };
-            image::Frame frame;
-            bool cancelled = false;
-            if (chosen.gl) {
-                glcontext::ScopedCurrent current(*context_);
-                gl::GlRenderer renderer(context_->gl());
-                gl::GlRenderOutcome result = renderer.render(program, {256, &cancel_, progress});
-                frame = std::move(result.frame);
-                cancelled = result.cancelled;
-            } else {
-                cpu::RenderControl control;
-                control.cancel = &cancel_;
-                control.progress = progress;
-                cpu::RenderOutcome result = cpu::renderCpu(program, control);
-                frame = std::move(result.frame);
-                cancelled = result.cancelled;
-            }
-            double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (cancelled) {
-                outcome = "snapshot cancelled; nothing written";
-            } else {
-                image::writeImage(chosen.path, frame.color,
-                                  {{"sdfwb:scene", scene.name}, {"sdfwb:backend", chosen.gl ? "gl" : "cpu"}});
-                std::ostringstream text;
-                text.precision(3);
-                text << "wrote " << chosen.path << " (" << chosen.width << "x" << chosen.height << ", AA "
-                     << chosen.aa << ", " << seconds << " s)";
-                outcome = text.str();
-            }
-        } catch (const std::exception& error) {
-            outcome = std::string("snapshot failed: ") + error.what();
-        }
-        std::lock_guard lock(mutex_);
-        outcome_ = outcome;
-        running_ = false;
+    jobs::JobQueue::WorkerScope scope;
+    if (context_) {
+        scope = [context = context_.get()](const std::function<void()>& runJobs) {
+            glcontext::ScopedCurrent current(*context);
+            runJobs();
+        };
+    }
+    queue_ = std::make_unique<jobs::JobQueue>(1, std::move(scope));
+    outcome_ = std::make_shared<std::string>();
+    job_ = queue_->submit([scene, chosen, context = context_.get(), outcome = outcome_](jobs::Job& job) {
+        *outcome = exportSnapshot(scene, chosen, context, job);
     });
 }
 
+void SnapshotExport::cancel() {
+    if (job_) job_->cancel();
+}
+
 std::string SnapshotExport::takeOutcome() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(outcome_, {});
+    if (!job_ || !job_->finished() || !outcome_) return {};
+    std::string outcome = std::exchange(*outcome_, {});
+    if (outcome.empty() && job_->cancelled() && !job_->started()) outcome = "snapshot cancelled; nothing written";
+    outcome_.reset();
+    return outcome;
 }
 
 void SnapshotExport::poll() {
-    if (!running_ && worker_.joinable()) {
-        worker_.join();
+    if (job_ && job_->finished()) {
+        queue_.reset();
         context_.reset();  // on the main thread, as GLFW requires
     }
 }

@@ -2,6 +2,7 @@
 
 #include <functional>
 
+#include "cpu/cpu_renderer.h"
 #include "ui/view_camera.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
@@ -22,6 +23,7 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         keys_.clear();
         // renders for the previous state are stale: requested again if still shown
         jobs_.cancelAll();
+        pending_.clear();
         requested_.clear();
         nlohmann::ordered_json look = scene::sceneToJson(scene);
         look.erase("root");
@@ -45,7 +47,14 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         alone.camera = ui::framedCamera(scene.camera, node);
         alone.render.aa = 1;
         program::CompileOptions options{kSize, kSize, 1};
-        jobs_.submit({key, program::compileScene(alone, options)}, false);
+        auto frame = std::make_shared<image::Frame>();
+        jobs::JobHandle job = jobs_.submit([program = program::compileScene(alone, options), frame](jobs::Job& job) {
+            render::RenderControl control;
+            control.threads = 1;  // a thumbnail is small: leave the other cores to the viewport
+            control.cancel = &job.cancelFlag();
+            *frame = cpu::renderCpu(program, control).frame;
+        });
+        pending_.push_back({key, std::move(job), std::move(frame)});
     }
     return previous == shown_.end() ? nullptr : textures_.at(previous->second)->id();
 }
@@ -53,11 +62,15 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
 void Thumbnails::update(bool paused) {
     paused_ = paused;
     jobs_.setPaused(paused);
-    for (CpuResult& result : jobs_.takeResults()) {
-        auto texture = std::make_unique<DisplayTexture>(gl_);
-        texture->upload(result.frame.color);
-        textures_[result.tag] = std::move(texture);
-    }
+    std::erase_if(pending_, [&](const Pending& p) {
+        if (!p.job->finished()) return false;
+        if (!p.job->cancelled()) {
+            auto texture = std::make_unique<DisplayTexture>(gl_);
+            texture->upload(p.frame->color);
+            textures_[p.key] = std::move(texture);
+        }
+        return true;
+    });
 }
 
 }  // namespace sdfwb::app::gui

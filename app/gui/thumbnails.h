@@ -8,9 +8,10 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <vector>
 
-#include "app/gui/cpu_jobs.h"
 #include "app/gui/display_texture.h"
+#include "jobs/job_queue.h"
 #include "scene/scene.h"
 #include "ui/node_path.h"
 
@@ -33,8 +34,14 @@ public:
     bool idle() const { return !jobs_.busy(); }
 
 private:
+    struct Pending {
+        std::uint64_t key = 0;
+        jobs::JobHandle job;
+        std::shared_ptr<image::Frame> frame;  // written by the job
+    };
+
     const glcontext::GlFunctions& gl_;
-    CpuJobQueue jobs_{1};
+    std::vector<Pending> pending_;
     std::map<std::uint64_t, std::unique_ptr<DisplayTexture>> textures_;
     std::set<std::uint64_t> requested_;
     bool paused_ = false;
@@ -43,6 +50,7 @@ private:
     std::map<ui::NodePath, std::uint64_t> keys_;
     // The texture last shown at each path: shown until the new one is ready.
     std::map<ui::NodePath, std::uint64_t> shown_;
+    jobs::JobQueue jobs_{1};  // last: stops before what its jobs write into
 };
 
 }  // namespace sdfwb::app::gui

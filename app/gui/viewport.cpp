@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
+#include "cpu/cpu_backend.h"
+#include "gl/gl_backend.h"
 #include "program/compile_scene.h"
 
 namespace sdfwb::app::gui {
@@ -11,61 +12,51 @@ namespace sdfwb::app::gui {
 namespace {
 constexpr int kDefaultTileSize = 64;   // pixels per side of one GL draw, before any measurement
 constexpr double kDrawBudget = 0.006;  // seconds one GL draw should take at most
-constexpr double kPreviewCost = 0.05;  // GPU seconds a preview image should take while interacting
-constexpr std::uint64_t kStageTags = 16;  // CPU job tags: plan * 16 + stage
+constexpr double kPreviewCost = 0.05;  // seconds a preview image should take
 
 std::uint64_t mix(std::uint64_t seed, std::uint64_t value) {
     return seed ^ (value + 0x9e3779b97f4a7c15ull + (seed << 6) + (seed >> 2));
 }
+
+const char* sourceName(Source source) { return source == Source::Gl ? "GLSL" : "CPU"; }
 }  // namespace
 
-Viewport::Viewport(glcontext::GlContext& context)
-    : context_(context),
-      renderer_(context.gl()),
-      builder_(context.createShared()),
-      cpuJobs_(0),
-      glTexture_(context.gl()),
-      cpuTexture_(context.gl()),
-      differenceTexture_(context.gl()) {}
+Viewport::Viewport(glcontext::GlContext& context) : context_(context), differenceTexture_(context.gl()) {
+    // The one place the viewport names its backends: the GL backend builds
+    // programs on a worker with a context sharing the window's.
+    lanes_.reserve(kSources);
+    lanes_.push_back({Source::Gl, std::make_unique<gl::GlBackend>(context, context.createShared()),
+                      DisplayTexture(context.gl())});
+    lanes_.push_back({Source::Cpu, std::make_unique<cpu::CpuBackend>(), DisplayTexture(context.gl())});
+}
 
 Viewport::~Viewport() = default;
 
-void Viewport::plan(const scene::Scene& scene, const ui::UiState& ui, int width, int height, bool interacting) {
-    planId_++;
+void Viewport::plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
+                    bool interacting) {
     scene_ = scene;
     compare_ = ui.compare != ui::CompareMode::Off;
-    useGl_ = ui.backend == ui::ViewBackend::Gl || compare_;
-    useCpu_ = ui.backend == ui::ViewBackend::Cpu || compare_;
-    glShown_ = useGl_;
-    cpuFallback_ = false;
+    wanted_ = ui.backend == ui::ViewBackend::Gl ? Source::Gl : Source::Cpu;
     heat_ = ui.stepHeat;
+    interacting_ = interacting;
     width_ = std::max(1, ui.compare == ui::CompareMode::SideBySide ? width / 2 : width);
     height_ = std::max(1, height);
+    // never 0, which means "nothing" in ImageContent
+    state_ = std::max<std::uint64_t>(1, mix(mix(mix(revision, width_), height_), heat_));
     stages_.clear();
-    if (interacting) {
-        stages_.push_back({previewScale(), 1});
-    } else {
-        stages_.push_back({1, 1});
-        if (scene.render.aa > 1) stages_.push_back({1, scene.render.aa});
+    stages_.push_back({true, 1});
+    if (!interacting) {
+        stages_.push_back({false, 1});
+        if (scene.render.aa > 1) stages_.push_back({false, scene.render.aa});
     }
-    glStage_ = 0;
-    glJob_.reset();
-    cpuStage_ = compare_ ? stages_.size() - 1 : 0;
-    cpuSubmitted_ = false;
-    cpuJobs_.cancelAll();
-    glFinal_.reset();
-    cpuFinal_.reset();
+    for (Lane& lane : lanes_) {
+        lane.job.reset();
+        lane.next.reset();
+        lane.stage = 0;
+        lane.final.reset();
+        lane.texture.resize(width_, height_);
+    }
     comparison_.reset();
-    if (useGl_) glTexture_.resize(width_, height_);
-    if (useCpu_) cpuTexture_.resize(width_, height_);
-}
-
-program::Program Viewport::programFor(const Stage& stage) const {
-    program::CompileOptions options;
-    options.width = std::max(1, width_ / stage.scale);
-    options.height = std::max(1, height_ / stage.scale);
-    options.aa = stage.aa;
-    return program::compileScene(scene_, options);
 }
 
 void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
@@ -77,140 +68,177 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
     }
     if (key != requestKey_) {
         requestKey_ = key;
-        plan(scene, ui, width, height, interacting);
+        plan(scene, revision, ui, width, height, interacting);
     }
-    if (useGl_) updateGl(budgetSeconds);
-    if (useGl_ && !compare_ && glStage_ == 0 && glWaiting_ && !cpuFallback_) {
-        // the last GL image stays up until the CPU's first stage replaces it
-        cpuFallback_ = true;
-        cpuTexture_.resize(width_, height_);
+
+    // Whether the GL backend can render its next stage now decides whether
+    // the CPU stands in (view_choice.h: planLanes).
+    Lane& gl = laneOf(Source::Gl);
+    bool glReady = true, glFailed = false;
+    if ((wanted_ == Source::Gl || compare_) && !gl.job && nextProgram(gl)) {
+        render::Readiness readiness = gl.backend->readiness(*gl.next);
+        glReady = readiness.ready;
+        glFailed = !readiness.error.empty();
+        if (glFailed) error_ = readiness.error;
     }
-    if (cpuFallback_ && glStage_ > 0 && error_.empty()) {  // the GL image is complete: it takes over
-        cpuFallback_ = false;
-        glShown_ = true;
-        cpuJobs_.cancelAll();
+    lanePlan_ = planLanes(wanted_, compare_, glReady, glFailed);
+    stats_.compiles = gl.backend->builds();
+    stats_.compileSeconds = gl.backend->lastPrepareSeconds();
+
+    stats_.status.clear();
+    for (Lane& lane : lanes_) advance(lane, lanePlan_.renders[static_cast<int>(lane.source)], budgetSeconds);
+    if (stats_.status.empty()) {
+        if (!glReady && !glFailed) {
+            stats_.status = "compiling shader";
+        } else {
+            stats_.status = error_.empty() ? "done" : "GL shader failed";
+        }
     }
-    if (useCpu_ || cpuFallback_) updateCpu();
-    if (cpuFallback_ && glWaiting_) stats_.status = "compiling shader; CPU image meanwhile";
-    if (!useGl_ || glStage_ >= stages_.size()) {
-        if (!useCpu_ || cpuStage_ >= stages_.size()) stats_.status = error_.empty() ? "done" : "GL shader failed";
-    }
+    if (lanePlan_.standIn && !glReady && !glFailed) stats_.status = "compiling shader; CPU image meanwhile";
 }
 
-void Viewport::updateGl(double budgetSeconds) {
-    while (std::optional<gl::BuiltProgram> built = builder_.take()) {
-        if (built->linked) {
-            renderer_.adoptProgram(built->program, std::move(built->linked));
-            stats_.compileSeconds = built->seconds;
-            stats_.compiles++;
-        } else {
-            error_ = built->error;
-            failedStructure_ = built->program.structureKey();
+bool Viewport::nextProgram(Lane& lane) {
+    if (lane.next) return true;
+    // a preview of a state the texture already shows is not worth drawing
+    if (lane.stage < stages_.size() && stages_[lane.stage].preview && lane.content.state == state_) ++lane.stage;
+    if (lane.stage >= stages_.size()) return false;
+    const Stage& stage = stages_[lane.stage];
+    lane.scale = stage.preview ? previewScale(lane) : 1;
+    program::CompileOptions options;
+    options.width = std::max(1, width_ / lane.scale);
+    options.height = std::max(1, height_ / lane.scale);
+    options.aa = stage.aa;
+    lane.next = program::compileScene(scene_, options);
+    return true;
+}
+
+void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
+    if (!renders) {
+        lane.job.reset();  // a stand-in no longer needed: its cores go to the backend that is ready
+        return;
+    }
+    if (!lane.job) {
+        if (!nextProgram(lane)) return;
+        render::Readiness readiness = lane.backend->readiness(*lane.next);
+        if (!readiness.ready) return;
+        if (lane.source == Source::Gl) error_.clear();
+        render::RenderControl control;
+        control.tileSize = tileSize(lane);
+        try {
+            lane.job = lane.backend->startProgressive(*lane.next, control);
+        } catch (const std::exception& error) {
+            error_ = error.what();
+            lane.stage = stages_.size();
+            return;
         }
     }
-    if (glStage_ >= stages_.size()) return;
-    const Stage& stage = stages_[glStage_];
     try {
-        if (!glJob_) {
-            program::Program program = programFor(stage);
-            if (failedStructure_ == program.structureKey()) {
-                glStage_ = stages_.size();  // nothing more to do until the structure changes
-                return;
+        for (const render::TileRect& tile : lane.job->advance(budgetSeconds)) {
+            if (refinesInPlace(lane.content, state_)) {
+                lane.texture.upload(lane.job->frame(), tile, lane.scale, heat_, scene_.render.maxSteps);
             }
-            glWaiting_ = !renderer_.hasProgram(program);
-            if (glWaiting_) {
-                builder_.request(program);
-                stats_.status = "compiling shader";
-                return;
-            }
-            error_.clear();
-            glJob_ = std::make_unique<gl::ProgressiveRender>(renderer_, std::move(program), tileSize());
-        }
-        for (const gl::TileRect& tile : glJob_->advance(budgetSeconds)) {
-            glTexture_.upload(glJob_->frame(), tile, stage.scale, heat_, scene_.render.maxSteps);
-        }
-        stats_.status = "GL: rendering " + std::to_string(static_cast<int>(glJob_->progress() * 100)) + "%" +
-                        (stage.scale > 1 ? " (preview)" : " at AA " + std::to_string(stage.aa));
-        if (glJob_->done()) {
-            const program::Program& done = glJob_->program();
-            double samples = static_cast<double>(done.width) * done.height * done.aa * done.aa;
-            double gpu = glJob_->gpuSeconds() > 0 ? glJob_->gpuSeconds() : glJob_->drawSeconds();
-            secondsPerSample_ = gpu / std::max(1.0, samples);
-            stats_.gpuSeconds = glJob_->gpuSeconds();
-            finishStage(glJob_->frame(), glJob_->drawSeconds(), stage, true);
-            glJob_.reset();
-            ++glStage_;
         }
     } catch (const std::exception& error) {
         error_ = error.what();
-        glJob_.reset();
-        glStage_ = stages_.size();
+        lane.job.reset();
+        lane.stage = stages_.size();
+        return;
     }
+    if (lane.job->done()) {
+        finishStage(lane);
+        return;
+    }
+    const Stage& stage = stages_[lane.stage];
+    stats_.status = std::string(sourceName(lane.source)) + ": rendering " +
+                    std::to_string(static_cast<int>(lane.job->progress() * 100)) + "%" +
+                    (stage.preview ? " (preview)" : " at AA " + std::to_string(stage.aa));
 }
 
-int Viewport::previewScale() const {
-    // the largest preview whose cost, as measured on the last GL stage, is
-    // about kPreviewCost; at least half resolution
+void Viewport::finishStage(Lane& lane) {
+    const render::ProgressiveRender& job = *lane.job;
+    const image::Frame& frame = job.frame();
+    if (!refinesInPlace(lane.content, state_)) {
+        // the tiles waited: the finished image replaces one of another state at once
+        lane.texture.upload(frame, {0, 0, frame.color.width, frame.color.height}, lane.scale, heat_,
+                            scene_.render.maxSteps);
+    }
+    lane.content = {state_, static_cast<int>(lane.stage)};
+    const program::Program& done = job.program();
+    double samples = static_cast<double>(done.width) * done.height * done.aa * done.aa;
+    double seconds = job.deviceSeconds() > 0 ? job.deviceSeconds() : job.seconds();
+    lane.secondsPerSample = seconds / std::max(1.0, samples);
+    if (lane.source == view(compare_ ? Source::Gl : wanted_).shown) {
+        stats_.width = frame.color.width;
+        stats_.height = frame.color.height;
+        stats_.aa = done.aa;
+        stats_.renderSeconds = job.seconds();
+        stats_.gpuSeconds = job.deviceSeconds();
+        stats_.frame = image::frameStats(frame);
+    }
+    if (lane.stage + 1 == stages_.size()) {
+        lane.final = frame;
+        const Lane& gl = laneOf(Source::Gl);
+        const Lane& cpu = laneOf(Source::Cpu);
+        if (compare_ && gl.final && cpu.final) {
+            comparison_ = image::compareImages(gl.final->color, cpu.final->color);
+            differenceTexture_.resize(width_, height_);
+            differenceTexture_.upload(image::differenceHeatImage(gl.final->color, cpu.final->color));
+            differenceState_ = state_;
+        }
+    }
+    ++lane.stage;
+    lane.next.reset();
+    lane.job.reset();
+}
+
+int Viewport::previewScale(const Lane& lane) const {
+    // the largest preview whose cost, as measured on the lane's last stage,
+    // is about kPreviewCost; at least half resolution
     double pixels = static_cast<double>(width_) * height_;
-    if (secondsPerSample_ <= 0 || pixels <= 0) return 4;
-    double scale = std::ceil(std::sqrt(pixels * secondsPerSample_ / kPreviewCost));
+    if (lane.secondsPerSample <= 0 || pixels <= 0) return 4;
+    double scale = std::ceil(std::sqrt(pixels * lane.secondsPerSample / kPreviewCost));
     return std::clamp(static_cast<int>(scale), 2, 16);
 }
 
-int Viewport::tileSize() const {
-    if (secondsPerSample_ <= 0) return kDefaultTileSize;
+int Viewport::tileSize(const Lane& lane) const {
+    if (lane.source != Source::Gl) return 0;  // the CPU backend's default: its tiles run on workers
+    if (lane.secondsPerSample <= 0) return kDefaultTileSize;
     // a square tile whose single sub-sample pass costs about kDrawBudget
-    int side = static_cast<int>(std::sqrt(kDrawBudget / secondsPerSample_));
+    int side = static_cast<int>(std::sqrt(kDrawBudget / lane.secondsPerSample));
     return std::clamp(side / 16 * 16, 16, 256);
 }
 
-void Viewport::updateCpu() {
-    for (CpuResult& result : cpuJobs_.takeResults()) {
-        if (cpuStage_ >= stages_.size() || result.tag != planId_ * kStageTags + cpuStage_) continue;
-        const Stage& stage = stages_[cpuStage_];
-        gl::TileRect all{0, 0, result.frame.color.width, result.frame.color.height};
-        cpuTexture_.upload(result.frame, all, stage.scale, heat_, scene_.render.maxSteps);
-        if (cpuFallback_) glShown_ = false;
-        finishStage(result.frame, result.seconds, stage, false);
-        ++cpuStage_;
-        cpuSubmitted_ = false;
-    }
-    if (cpuStage_ < stages_.size()) {
-        if (!cpuSubmitted_) {
-            cpuJobs_.submit({planId_ * kStageTags + cpuStage_, programFor(stages_[cpuStage_])}, true);
-            cpuSubmitted_ = true;
-        }
-        if (!useGl_ || glStage_ >= stages_.size() || cpuFallback_) {
-            stats_.status = "CPU: rendering " + std::to_string(static_cast<int>(cpuJobs_.progress() * 100)) + "%";
-        }
-    }
+SlotView Viewport::view(Source wanted) const {
+    const ImageContent contents[kSources] = {laneOf(Source::Gl).content, laneOf(Source::Cpu).content};
+    return chooseSlot(wanted, contents, state_, interacting_);
 }
 
-void Viewport::finishStage(const image::Frame& frame, double seconds, const Stage& stage, bool gl) {
-    // a GL stage finishing while the CPU stands in is the image that takes
-    // over (update() swaps them next): its figures are the ones to show
-    if (gl == glShown_ || (gl && cpuFallback_)) {
-        if (!gl) stats_.gpuSeconds = 0;
-        stats_.width = frame.color.width;
-        stats_.height = frame.color.height;
-        stats_.aa = stage.aa;
-        stats_.renderSeconds = seconds;
-        stats_.frame = image::frameStats(frame);
+SlotImage Viewport::slot(Source wanted) const {
+    SlotView view = this->view(wanted);
+    SlotImage image{&laneOf(view.shown).texture, ""};
+    switch (view.note) {
+    case SlotView::Note::None: break;
+    case SlotView::Note::StandIn:
+        image.note = std::string(sourceName(view.shown)) + " image until the " + sourceName(wanted) + " one is ready";
+        break;
+    case SlotView::Note::Outdated: image.note = "outdated: an earlier state, rendering the current one"; break;
+    case SlotView::Note::Empty: image.note = "rendering"; break;
     }
-    if (&stage != &stages_.back()) return;
-    (gl ? glFinal_ : cpuFinal_) = frame;
-    if (compare_ && glFinal_ && cpuFinal_) {
-        comparison_ = image::compareImages(glFinal_->color, cpuFinal_->color);
-        differenceTexture_.upload(image::differenceHeatImage(glFinal_->color, cpuFinal_->color));
-    }
+    return image;
+}
+
+SlotImage Viewport::difference() const {
+    if (differenceState_ == state_) return {&differenceTexture_, ""};
+    return {&differenceTexture_, differenceState_ == 0 ? "waiting for both backends" : "outdated: an earlier state"};
 }
 
 bool Viewport::idle() const {
     if (requestKey_ == 0) return false;  // nothing requested yet: the first frame is still to come
-    bool glDone = !useGl_ || glStage_ >= stages_.size();
-    bool cpuDone = !useCpu_ || cpuStage_ >= stages_.size();
+    for (const Lane& lane : lanes_) {
+        if (lanePlan_.renders[static_cast<int>(lane.source)] && lane.stage < stages_.size()) return false;
+    }
     bool compareDone = !compare_ || comparison_.has_value() || !error_.empty();
-    return glDone && cpuDone && compareDone && !builder_.busy();
+    return compareDone && laneOf(Source::Gl).backend->buildsIdle();
 }
 
 }  // namespace sdfwb::app::gui

@@ -1,22 +1,25 @@
 #pragma once
 // The live viewport's rendering: what to render for the current scene and
-// view, in stages (a reduced-resolution AA 1 preview while the user
-// interacts; AA 1 then the scene's AA when idle), by the GLSL backend in the
-// window's context (progressive tiles within a per-frame budget, programs
-// built by a worker; the CPU backend stands in while a program is built) or
-// by the CPU backend on a worker thread, and both for the compare view. The UI thread calls update() once per frame; nothing in
-// it waits on a render or a compile.
+// view, in stages (a reduced-resolution AA 1 preview, then AA 1 and the
+// scene's AA when idle; the preview alone while the user interacts), by the
+// backends behind the backend contract: the GL backend in the window's
+// context (progressive draws within a per-frame budget, programs built by a
+// worker), the CPU backend on its job queue. The decisions (which backends
+// render, which image each slot shows) are app/gui/view_choice.h's. The UI
+// thread calls update() once per frame; nothing in it waits on a render or
+// a compile.
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "app/gui/cpu_jobs.h"
 #include "app/gui/display_texture.h"
-#include "gl/program_builder.h"
-#include "gl/progressive_render.h"
+#include "app/gui/view_choice.h"
+#include "glcontext/gl_context.h"
 #include "image/compare.h"
+#include "render/render_backend.h"
 #include "scene/scene.h"
 #include "ui/ui_state.h"
 
@@ -26,11 +29,18 @@ struct ViewportStats {
     int width = 0, height = 0;           // of the image being shown
     int aa = 1;
     double renderSeconds = 0;            // of the last finished stage
-    double compileSeconds = 0;           // of the last adopted program
+    double compileSeconds = 0;           // of the last program built
     double gpuSeconds = 0;               // GL timer queries of the last finished GL stage
     image::FrameStats frame;             // of the last finished stage
     std::string status;                  // "compiling shader", "refining 40%", "done"
-    int compiles = 0;                    // programs adopted from the builder
+    int compiles = 0;                    // programs built for the viewport
+};
+
+// What one view slot draws: a texture and what to say over it ("" or a note
+// such as "CPU image until the GLSL one is ready").
+struct SlotImage {
+    const DisplayTexture* texture = nullptr;
+    std::string note;
 };
 
 class Viewport {
@@ -47,11 +57,11 @@ public:
     // Every stage of every backend in use is finished for the last update's request.
     bool idle() const;
 
-    // The textures to show: the chosen backend's image; in compare mode the
-    // GL image (main), the CPU image (second) and the difference heat (difference).
-    const DisplayTexture& main() const { return glShown_ ? glTexture_ : cpuTexture_; }
-    const DisplayTexture& second() const { return cpuTexture_; }
-    const DisplayTexture& difference() const { return differenceTexture_; }
+    // The images to show: the chosen backend's; in compare mode the GL
+    // image (main), the CPU image (second) and the difference heat.
+    SlotImage main() const { return slot(compare_ ? Source::Gl : wanted_); }
+    SlotImage second() const { return slot(Source::Cpu); }
+    SlotImage difference() const;
     // The compare view's metrics, once both backends finished the same image.
     const std::optional<image::Comparison>& comparison() const { return comparison_; }
 
@@ -62,50 +72,55 @@ public:
 
 private:
     struct Stage {
-        int scale = 1;  // the render is width/scale x height/scale, shown scaled up
+        bool preview = false;  // at a reduced resolution (previewScale), shown scaled up
         int aa = 1;
     };
-    void plan(const scene::Scene& scene, const ui::UiState& ui, int width, int height, bool interacting);
-    void updateGl(double budgetSeconds);
-    void updateCpu();
-    program::Program programFor(const Stage& stage) const;
-    void finishStage(const image::Frame& frame, double seconds, const Stage& stage, bool gl);
+    // One backend with its texture and its share of the current request.
+    struct Lane {
+        Source source;
+        std::unique_ptr<render::Backend> backend;
+        DisplayTexture texture;
+        ImageContent content;
+        std::unique_ptr<render::ProgressiveRender> job;
+        size_t stage = 0;                     // next stage to render (or the one rendering)
+        std::optional<program::Program> next; // the program of that stage, once made
+        int scale = 1;                        // of that program: width/scale x height/scale
+        std::optional<image::Frame> final;    // the last stage's frame of the current state
+        // Measured cost of one sample (pixel x AA sub-sample), which sizes
+        // previews and, on GL, tiles so that one draw stays inside the budget.
+        double secondsPerSample = 0;
+    };
+
+    void plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
+              bool interacting);
+    // The lane's next program (skipping a preview of a state it already
+    // shows); false when the lane has no stage left.
+    bool nextProgram(Lane& lane);
+    void advance(Lane& lane, bool renders, double budgetSeconds);
+    void finishStage(Lane& lane);
+    int previewScale(const Lane& lane) const;
+    int tileSize(const Lane& lane) const;
+    SlotView view(Source wanted) const;
+    SlotImage slot(Source wanted) const;
+    Lane& laneOf(Source source) { return lanes_[static_cast<int>(source)]; }
+    const Lane& laneOf(Source source) const { return lanes_[static_cast<int>(source)]; }
 
     glcontext::GlContext& context_;
-    gl::GlRenderer renderer_;
-    gl::ProgramBuilder builder_;
-    CpuJobQueue cpuJobs_;
-    DisplayTexture glTexture_, cpuTexture_, differenceTexture_;
+    std::vector<Lane> lanes_;  // indexed by Source
+    DisplayTexture differenceTexture_;
+    std::uint64_t differenceState_ = 0;
 
     // The request being served.
     std::uint64_t requestKey_ = 0;
-    std::uint64_t planId_ = 0;
+    std::uint64_t state_ = 0;  // see view_choice.h
     scene::Scene scene_;
     std::vector<Stage> stages_;
     int width_ = 0, height_ = 0;
-    bool useGl_ = true, useCpu_ = false, compare_ = false, heat_ = false;
-    bool glShown_ = true;
-    // While the GL program for a new structure is still being built, the CPU
-    // backend renders the request meanwhile, so the viewport never sits on a
-    // stale or black image; the GL image replaces it once its first stage is done.
-    bool cpuFallback_ = false;
-    bool glWaiting_ = false;  // the GL stage waits for the builder
+    Source wanted_ = Source::Gl;
+    bool compare_ = false, heat_ = false, interacting_ = false;
+    LanePlan lanePlan_;
 
-    size_t glStage_ = 0;
-    std::unique_ptr<gl::ProgressiveRender> glJob_;
-    std::optional<std::uint64_t> failedStructure_;
-    size_t cpuStage_ = 0;
-    bool cpuSubmitted_ = false;
-    std::optional<image::Frame> glFinal_, cpuFinal_;
     std::optional<image::Comparison> comparison_;
-
-    // Measured cost of one GL sample (pixel x AA sub-sample), which sizes
-    // the next job's tiles so that one draw stays well inside the budget.
-    double secondsPerSample_ = 0;
-    int tileSize() const;
-    // The preview's reduction factor while the user interacts.
-    int previewScale() const;
-
     ViewportStats stats_;
     std::string error_;
 };

@@ -95,6 +95,25 @@ void statsOverlay(AppState& app, ImVec2 corner) {
     ImGui::PopStyleColor();
 }
 
+// One slot's image with its caption at the bottom left and, when the image
+// is not the current state's (view_choice.h), its note on a dark band along
+// the bottom, above which the caption moves.
+void slotImage(const SlotImage& slot, ImVec2 corner, ImVec2 size, const char* caption) {
+    ImGui::Image(slot.texture->id(), size);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    float bottom = corner.y + size.y;
+    if (!slot.note.empty()) {
+        const float band = ImGui::GetTextLineHeightWithSpacing() + 8;
+        draw->PushClipRect(corner, ImVec2(corner.x + size.x, bottom), true);
+        draw->AddRectFilled(ImVec2(corner.x, bottom - band), ImVec2(corner.x + size.x, bottom),
+                            IM_COL32(20, 22, 26, 200));
+        draw->AddText(ImVec2(corner.x + 8, bottom - band + 4), IM_COL32(255, 210, 120, 255), slot.note.c_str());
+        draw->PopClipRect();
+        bottom -= band;
+    }
+    if (*caption) draw->AddText(ImVec2(corner.x + 8, bottom - 22), IM_COL32_WHITE, caption);
+}
+
 void comparisonLine(const AppState& app) {
     const auto& c = app.viewport->comparison();
     if (!c) {
@@ -133,22 +152,18 @@ void drawViewportPanel(AppState& app) {
     const Viewport& viewport = *app.viewport;
     switch (app.ui.compare) {
     case ui::CompareMode::Off:
-        ImGui::Image(viewport.main().id(), size);
+        slotImage(viewport.main(), corner, size, "");
         break;
     case ui::CompareMode::SideBySide: {
         ImVec2 half(size.x / 2, size.y);
-        ImGui::Image(viewport.main().id(), half);
+        slotImage(viewport.main(), corner, half, "GLSL");
         ImGui::SameLine(0, 0);
-        ImGui::Image(viewport.second().id(), half);
-        ImDrawList* draw = ImGui::GetWindowDrawList();
-        draw->AddText(ImVec2(corner.x + 8, corner.y + size.y - 22), IM_COL32_WHITE, "GLSL");
-        draw->AddText(ImVec2(corner.x + half.x + 8, corner.y + size.y - 22), IM_COL32_WHITE, "CPU");
+        slotImage(viewport.second(), ImVec2(corner.x + half.x, corner.y), half, "CPU");
         break;
     }
     case ui::CompareMode::Difference:
-        ImGui::Image(viewport.difference().id(), size);
-        ImGui::GetWindowDrawList()->AddText(ImVec2(corner.x + 8, corner.y + size.y - 22), IM_COL32_WHITE,
-                                            "|GLSL - CPU| per pixel: black equal, blue small, yellow, red 8/255 or more");
+        slotImage(viewport.difference(), corner, size,
+                  "|GLSL - CPU| per pixel: black equal, blue small, yellow, red 8/255 or more");
         break;
     }
     ImGui::SetCursorScreenPos(corner);

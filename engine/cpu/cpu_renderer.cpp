@@ -26,35 +26,29 @@ namespace {
 
 // Kernel is f32::Kernel or f64::Kernel.
 template <typename Kernel>
-RenderOutcome render(const program::Program& program, const RenderControl& control) {
+bool renderTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
+                 const std::function<void(const render::TileRect&)>& onTile) {
     const Kernel kernel(program);
     using Real = typename Kernel::Real;
     using vec3 = typename Kernel::Vec3;
     using Scratch = typename Kernel::ScratchType;
 
     const int width = program.width, height = program.height, aa = program.aa;
-    RenderOutcome outcome;
-    outcome.frame.color = image::Image(width, height);
-    outcome.frame.steps.assign(outcome.frame.color.pixelCount(), 0.0f);
-    outcome.frame.coverage.assign(outcome.frame.color.pixelCount(), 0.0f);
-    outcome.frame.depth.assign(outcome.frame.color.pixelCount(), 0.0f);
-
-    const int tile = std::max(1, control.tileSize);
-    const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
-    const int tilesTotal = tilesX * tilesY;
+    const std::vector<render::TileRect> tiles =
+        render::tileGrid(width, height, control.tileSize > 0 ? control.tileSize : kDefaultTileSize);
+    const int tilesTotal = static_cast<int>(tiles.size());
     std::atomic<int> tilesDone{0};
     std::atomic<bool> cancelled{false};
-    std::mutex progressMutex;
+    std::mutex reportMutex;
 
-    auto renderTile = [&](int tileIndex) {
+    auto renderTile = [&](const render::TileRect& tile) {
         if (control.cancel && control.cancel->load()) {
             cancelled = true;
             return;
         }
         Scratch scratch(program);
-        int x0 = (tileIndex % tilesX) * tile, y0 = (tileIndex / tilesX) * tile;
-        for (int y = y0; y < std::min(y0 + tile, height); ++y) {
-            for (int x = x0; x < std::min(x0 + tile, width); ++x) {
+        for (int y = tile.y; y < tile.y + tile.h; ++y) {
+            for (int x = tile.x; x < tile.x + tile.w; ++x) {
                 vec3 sum(Real(0));
                 int steps = 0, hits = 0;
                 float depthSum = 0.0f;  // summed in float, in the GL backend's blending order
@@ -72,19 +66,18 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
                 }
                 vec3 color = sum / Real(aa * aa);
                 size_t i = static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x);
-                outcome.frame.color.rgb[3 * i + 0] = static_cast<float>(color.x);
-                outcome.frame.color.rgb[3 * i + 1] = static_cast<float>(color.y);
-                outcome.frame.color.rgb[3 * i + 2] = static_cast<float>(color.z);
-                outcome.frame.steps[i] = static_cast<float>(steps) / static_cast<float>(aa * aa);
-                outcome.frame.coverage[i] = static_cast<float>(hits) / static_cast<float>(aa * aa);
-                outcome.frame.depth[i] = hits > 0 ? depthSum / static_cast<float>(hits) : 0.0f;
+                frame.color.rgb[3 * i + 0] = static_cast<float>(color.x);
+                frame.color.rgb[3 * i + 1] = static_cast<float>(color.y);
+                frame.color.rgb[3 * i + 2] = static_cast<float>(color.z);
+                frame.steps[i] = static_cast<float>(steps) / static_cast<float>(aa * aa);
+                frame.coverage[i] = static_cast<float>(hits) / static_cast<float>(aa * aa);
+                frame.depth[i] = hits > 0 ? depthSum / static_cast<float>(hits) : 0.0f;
             }
         }
         int done = ++tilesDone;
-        if (control.progress) {
-            std::lock_guard lock(progressMutex);
-            control.progress(done, tilesTotal);
-        }
+        std::lock_guard lock(reportMutex);
+        if (onTile) onTile(tile);
+        if (control.progress) control.progress(done, tilesTotal);
     };
 
     int threads = control.threads > 0 ? control.threads : tbb::this_task_arena::max_concurrency();
@@ -92,30 +85,40 @@ RenderOutcome render(const program::Program& program, const RenderControl& contr
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tilesTotal, 1),
                           [&](const tbb::blocked_range<int>& range) {
-                              for (int t = range.begin(); t != range.end(); ++t) renderTile(t);
+                              for (int t = range.begin(); t != range.end(); ++t) renderTile(tiles[t]);
                           },
                           tbb::simple_partitioner());
     });
-    outcome.cancelled = cancelled.load();
-    return outcome;
+    return !cancelled.load();
 }
 
 }  // namespace
 
-RenderOutcome renderCpu(const program::Program& program, const RenderControl& control) {
-    if (control.precision == Precision::Double) {
-        return render<f64::Kernel>(program, control);
+bool renderCpuTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
+                    const std::function<void(const render::TileRect&)>& onTile) {
+    if (control.precision == render::Precision::Double) {
+        return renderTiles<f64::Kernel>(program, control, frame, onTile);
     }
-    return render<f32::Kernel>(program, control);
+    return renderTiles<f32::Kernel>(program, control, frame, onTile);
 }
 
-double evaluateDistance(const program::Program& program, const glm::dvec3& marchPoint, Precision precision) {
+render::RenderOutcome renderCpu(const program::Program& program, const render::RenderControl& control) {
+    render::RenderOutcome outcome;
+    outcome.frame = render::blankFrame(program.width, program.height);
+    if (!renderCpuTiles(program, control, outcome.frame, {})) {
+        outcome.frame = {};
+        outcome.cancelled = true;
+    }
+    return outcome;
+}
+
+double evaluateDistance(const program::Program& program, const glm::dvec3& marchPoint, render::Precision precision) {
     auto evaluate = [&](const auto& kernel) {
         using K = std::decay_t<decltype(kernel)>;
         typename K::ScratchType scratch(program);
         return static_cast<double>(kernel.map(scratch, typename K::Vec3(marchPoint)).d);
     };
-    if (precision == Precision::Double) {
+    if (precision == render::Precision::Double) {
         return evaluate(f64::Kernel(program));
     }
     return evaluate(f32::Kernel(program));

@@ -4,33 +4,28 @@
 // independently, in a fixed sub-sample order), matching the GLSL backend's
 // float path within parity thresholds; Precision::Double is the reference.
 
-#include <atomic>
 #include <functional>
 
 #include "image/image.h"
 #include "program/program.h"
+#include "render/render_control.h"
+#include "render/tiles.h"
 
 namespace sdfwb::cpu {
 
-enum class Precision { Float, Double };
+constexpr int kDefaultTileSize = 32;  // pixels per side, when the control says 0
 
-struct RenderControl {
-    int threads = 0;                     // 0: all hardware threads
-    int tileSize = 32;                   // pixels
-    Precision precision = Precision::Float;
-    const std::atomic<bool>* cancel = nullptr;  // checked before each tile
-    // Called after each tile from worker threads (serialised by the renderer).
-    std::function<void(int tilesDone, int tilesTotal)> progress = {};
-};
+// The whole frame; the outcome's frame is empty when cancelled.
+render::RenderOutcome renderCpu(const program::Program& program, const render::RenderControl& control = {});
 
-struct RenderOutcome {
-    image::Frame frame;
-    bool cancelled = false;
-};
-
-RenderOutcome renderCpu(const program::Program& program, const RenderControl& control = {});
+// Renders into `frame` (program.width x program.height, as render::blankFrame
+// makes it), calling `onTile` after each finished tile from the worker
+// threads, one call at a time (with control.progress). Returns false when
+// cancelled; the tiles reported by then are complete.
+bool renderCpuTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
+                    const std::function<void(const render::TileRect&)>& onTile);
 
 // The scene's distance at a world point (for tests and tools), at the given precision.
-double evaluateDistance(const program::Program& program, const glm::dvec3& marchPoint, Precision precision);
+double evaluateDistance(const program::Program& program, const glm::dvec3& marchPoint, render::Precision precision);
 
 }  // namespace sdfwb::cpu

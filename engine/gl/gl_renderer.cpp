@@ -3,7 +3,7 @@
 #include <chrono>
 #include <vector>
 
-#include "gl/render_targets.h"
+#include "gl/progressive_render.h"
 #include "gl/shader_generator.h"
 #include "glcontext/gl_debug.h"
 #include "glcontext/shader_program.h"
@@ -73,6 +73,13 @@ const GlRenderer::CachedProgram& GlRenderer::programFor(const program::Program& 
 }
 
 void GlRenderer::prepare(const program::Program& program) { programFor(program); }
+
+void GlRenderer::warmUp(const program::Program& program) {
+    program::Program tiny = program;
+    tiny.width = tiny.height = 4;
+    tiny.aa = 1;
+    render(tiny);
+}
 
 void GlRenderer::uploadParameters(const program::Program& program, const CachedProgram& cached) {
     std::vector<float> params;
@@ -178,48 +185,11 @@ void GlRenderer::setDrawState(bool on) {
     }
 }
 
-GlRenderOutcome GlRenderer::render(const program::Program& program, const GlRenderControl& control) {
-    bindForDrawing(program);
-    const int width = program.width, height = program.height, aa = program.aa;
-    RenderTargets targets = makeRenderTargets(gl_, width, height);
-
-    const float zero[4] = {0, 0, 0, 0};
-    gl_.ClearBufferfv(GL_COLOR, 0, zero);
-    gl_.ClearBufferfv(GL_COLOR, 1, zero);
-    gl_.Viewport(0, 0, width, height);
-    setDrawState(true);
-
-    const int tile = std::max(16, control.tileSize);
-    const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
-    const int drawsTotal = tilesX * tilesY * aa * aa;
-    int drawsDone = 0;
-    GlRenderOutcome outcome;
-    for (int ty = 0; ty < tilesY && !outcome.cancelled; ++ty) {
-        for (int tx = 0; tx < tilesX && !outcome.cancelled; ++tx) {
-            gl_.Scissor(tx * tile, ty * tile, tile, tile);
-            for (int m = 0; m < aa && !outcome.cancelled; ++m) {
-                for (int n = 0; n < aa; ++n) {
-                    if (control.cancel && control.cancel->load()) {
-                        outcome.cancelled = true;
-                        break;
-                    }
-                    drawSubsample(m, n);
-                    // one draw at a time: a long queue would make cancel and progress lag
-                    gl_.Finish();
-                    if (control.progress) control.progress(++drawsDone, drawsTotal);
-                }
-            }
-        }
-    }
-    setDrawState(false);
-
-    if (!outcome.cancelled) {
-        outcome.frame = blankFrame(width, height);
-        readFrameRegion(gl_, targets, 0, 0, width, height, aa * aa, outcome.frame);
-    }
-    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gl_.UseProgram(0);
-    glcontext::checkGlError(gl_, "GlRenderer::render");
+render::RenderOutcome GlRenderer::render(const program::Program& program, const render::RenderControl& control) {
+    GlProgressiveRender job(*this, program, control.tileSize > 0 ? control.tileSize : kDefaultTileSize);
+    render::RenderOutcome outcome;
+    job.draw([&] { return !(outcome.cancelled = control.cancel && control.cancel->load()); }, control.progress);
+    if (!outcome.cancelled) outcome.frame = job.frame();
     return outcome;
 }
 

@@ -8,9 +8,7 @@
 // Program::structureKey(), parameter edits only re-upload the parameter buffer
 // and uniforms. The counters let tests assert that.
 
-#include <atomic>
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -19,6 +17,7 @@
 #include "glcontext/gl_object.h"
 #include "image/image.h"
 #include "program/program.h"
+#include "render/render_control.h"
 
 namespace sdfwb::gl {
 
@@ -29,16 +28,7 @@ struct GlCounters {
     double lastCompileSeconds = 0;
 };
 
-struct GlRenderControl {
-    int tileSize = 256;  // pixels per side of one draw call
-    const std::atomic<bool>* cancel = nullptr;  // checked between draws
-    std::function<void(int drawsDone, int drawsTotal)> progress = {};
-};
-
-struct GlRenderOutcome {
-    image::Frame frame;
-    bool cancelled = false;
-};
+constexpr int kDefaultTileSize = 256;  // pixels per side of one draw, when the control says 0
 
 class GlRenderer {
 public:
@@ -53,8 +43,13 @@ public:
     // glcontext::GlError whose message holds the build report, with line
     // numbers of the generated source (see generateFragmentShader).
     void prepare(const program::Program& program);
+    // prepare(), then a draw of a few pixels with the state real renders use,
+    // so that llvmpipe's code generation at the first draw happens here too.
+    void warmUp(const program::Program& program);
 
-    GlRenderOutcome render(const program::Program& program, const GlRenderControl& control = {});
+    // The whole frame (GlProgressiveRender run to the end); control.threads
+    // and control.precision do not apply.
+    render::RenderOutcome render(const program::Program& program, const render::RenderControl& control = {});
 
     const GlCounters& counters() const { return counters_; }
     const glcontext::GlFunctions& functions() const { return gl_; }
@@ -70,7 +65,7 @@ public:
     // sharing objects with this one (counts neither a generation nor a compile).
     void adoptProgram(const program::Program& program, glcontext::GlObject linked);
 
-    // --- Draw-by-draw rendering (render() and gl/progressive_render.h) ---
+    // --- Draw-by-draw rendering (gl/progressive_render.h) ---
     // Uses the program for `program`'s structure (building it if needed),
     // uploads its parameters and binds what a draw needs.
     void bindForDrawing(const program::Program& program);

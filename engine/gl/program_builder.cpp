@@ -1,81 +1,60 @@
 #include "gl/program_builder.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace sdfwb::gl {
 
 ProgramBuilder::ProgramBuilder(std::unique_ptr<glcontext::GlContext> context)
-    : context_(std::move(context)), worker_([this] { run(); }) {}
+    : context_(std::move(context)), queue_(1, [this](const std::function<void()>& runJobs) {
+          glcontext::ScopedCurrent current(*context_);
+          GlRenderer renderer(context_->gl());
+          workerRenderer_ = &renderer;
+          runJobs();
+          workerRenderer_ = nullptr;
+      }) {}
 
-ProgramBuilder::~ProgramBuilder() {
-    {
-        std::lock_guard lock(mutex_);
-        stop_ = true;
-    }
-    wake_.notify_all();
-    worker_.join();
-    done_.clear();  // programs nobody adopted are deleted here, with the caller's context current
-}
+ProgramBuilder::~ProgramBuilder() = default;
 
 void ProgramBuilder::request(const program::Program& program) {
-    std::uint64_t key = program.structureKey();
-    {
-        std::lock_guard lock(mutex_);
-        if ((queued_ && queued_->structureKey() == key) || running_ == key) return;
-        for (const BuiltProgram& built : done_) {
-            if (built.program.structureKey() == key) return;
-        }
-        queued_ = program;
+    const std::uint64_t key = program.structureKey();
+    for (const Pending& p : pending_) {
+        if (p.structure == key && !p.job->cancelled()) return;
     }
-    wake_.notify_all();
+    for (Pending& p : pending_) {
+        if (!p.job->started()) p.job->cancel();
+    }
+    auto result = std::make_shared<BuiltProgram>();
+    result->program = program;
+    jobs::JobHandle job = queue_.submit([this, result](jobs::Job&) {
+        auto start = std::chrono::steady_clock::now();
+        try {
+            workerRenderer_->warmUp(result->program);
+            result->linked = workerRenderer_->releaseProgram(result->program);
+            context_->gl().Finish();
+        } catch (const std::exception& error) {
+            result->error = error.what();
+        }
+        result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    });
+    pending_.push_back({key, std::move(job), std::move(result)});
 }
 
 std::optional<BuiltProgram> ProgramBuilder::take() {
-    std::lock_guard lock(mutex_);
-    if (done_.empty()) return std::nullopt;
-    BuiltProgram built = std::move(done_.front());
-    done_.pop_front();
-    return built;
+    std::erase_if(pending_, [](const Pending& p) { return p.job->cancelled() && p.job->finished(); });
+    auto built = std::find_if(pending_.begin(), pending_.end(), [](const Pending& p) { return p.job->finished(); });
+    if (built == pending_.end()) return std::nullopt;
+    BuiltProgram result = std::move(*built->result);
+    pending_.erase(built);
+    return result;
 }
 
 bool ProgramBuilder::busy() const {
-    std::lock_guard lock(mutex_);
-    return queued_.has_value() || running_.has_value();
+    return std::any_of(pending_.begin(), pending_.end(), [](const Pending& p) { return !p.job->finished(); });
 }
 
-void ProgramBuilder::run() {
-    glcontext::ScopedCurrent current(*context_);
-    GlRenderer renderer(context_->gl());
-    for (;;) {
-        program::Program program;
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [&] { return stop_ || queued_.has_value(); });
-            if (stop_) return;
-            program = std::move(*queued_);
-            queued_.reset();
-            running_ = program.structureKey();
-        }
-        auto start = std::chrono::steady_clock::now();
-        BuiltProgram built;
-        try {
-            // The warm-up draws a few pixels with the very state the real
-            // renders use, so the driver's per-state code is generated here.
-            program::Program warmUp = program;
-            warmUp.width = warmUp.height = 4;
-            warmUp.aa = 1;
-            renderer.render(warmUp);
-            built.linked = renderer.releaseProgram(program);
-            context_->gl().Finish();
-        } catch (const std::exception& error) {
-            built.error = error.what();
-        }
-        built.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        built.program = std::move(program);
-        std::lock_guard lock(mutex_);
-        running_.reset();
-        done_.push_back(std::move(built));
-    }
+void ProgramBuilder::wait() const {
+    for (const Pending& p : pending_) p.job->wait();
 }
 
 }  // namespace sdfwb::gl

@@ -1,20 +1,19 @@
 #pragma once
-// Builds GLSL-backend programs on a worker thread with its own context that
-// shares objects with the caller's, and warms each up with a small draw (so
-// llvmpipe's first-draw code generation also happens there). The caller
+// Builds GLSL-backend programs on a job-queue worker bound to its own context
+// that shares objects with the caller's, and warms each up with a small draw
+// (so llvmpipe's first-draw code generation also happens there). The caller
 // (the GUI thread) polls for finished programs and adopts them into its own
 // GlRenderer: it never waits on a compile.
 
-#include <condition_variable>
-#include <deque>
+#include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
+#include <vector>
 
 #include "gl/gl_renderer.h"
 #include "glcontext/gl_context.h"
+#include "jobs/job_queue.h"
 
 namespace sdfwb::gl {
 
@@ -29,32 +28,35 @@ class ProgramBuilder {
 public:
     // `context` shares objects with the caller's context; the worker makes it
     // current on its own thread. The builder is destroyed on the thread that
-    // made the context (GLFW needs the main thread), after the worker stopped.
+    // made the context (GLFW needs the main thread), with the caller's
+    // context current (programs nobody adopted are deleted then).
     explicit ProgramBuilder(std::unique_ptr<glcontext::GlContext> context);
     ~ProgramBuilder();
     ProgramBuilder(const ProgramBuilder&) = delete;
     ProgramBuilder& operator=(const ProgramBuilder&) = delete;
 
     // Queues a build of `program`'s structure unless one is queued, running
-    // or delivered already. Older queued requests are dropped: only the
-    // newest structure matters to an editor.
+    // or delivered already. Older requests not started yet are dropped: only
+    // the newest structure matters to an editor.
     void request(const program::Program& program);
     // A finished build, if any; the caller adopts `linked` (GlRenderer::adoptProgram).
     std::optional<BuiltProgram> take();
     // A build is queued or running.
     bool busy() const;
+    // Blocks until no build is queued or running (tests; the UI polls).
+    void wait() const;
 
 private:
-    void run();
+    struct Pending {
+        std::uint64_t structure = 0;
+        jobs::JobHandle job;
+        std::shared_ptr<BuiltProgram> result;  // written by the job
+    };
 
     std::unique_ptr<glcontext::GlContext> context_;
-    mutable std::mutex mutex_;
-    std::condition_variable wake_;
-    std::optional<program::Program> queued_;
-    std::optional<std::uint64_t> running_;
-    std::deque<BuiltProgram> done_;
-    bool stop_ = false;
-    std::thread worker_;
+    GlRenderer* workerRenderer_ = nullptr;  // lives on the worker's stack
+    std::vector<Pending> pending_;          // the caller's thread only
+    jobs::JobQueue queue_;                  // last: its worker stops before the rest goes
 };
 
 }  // namespace sdfwb::gl

@@ -7,35 +7,46 @@
 
 namespace sdfwb::gl {
 
-ProgressiveRender::ProgressiveRender(GlRenderer& renderer, program::Program program, int tileSize)
+GlProgressiveRender::GlProgressiveRender(GlRenderer& renderer, program::Program program, int tileSize)
     : renderer_(renderer),
       gl_(renderer.functions()),
       program_(std::move(program)),
       targets_(makeRenderTargets(gl_, program_.width, program_.height)),
-      frame_(blankFrame(program_.width, program_.height)),
+      tiles_(render::tileGrid(program_.width, program_.height, std::max(16, tileSize))),
+      frame_(render::blankFrame(program_.width, program_.height)),
       timer_(glcontext::makeQuery(gl_)) {
     const float zero[4] = {0, 0, 0, 0};
     gl_.ClearBufferfv(GL_COLOR, 0, zero);
     gl_.ClearBufferfv(GL_COLOR, 1, zero);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    const int tile = std::max(16, tileSize);
-    for (int y = 0; y < program_.height; y += tile) {
-        for (int x = 0; x < program_.width; x += tile) {
-            tiles_.push_back({x, y, std::min(tile, program_.width - x), std::min(tile, program_.height - y)});
-        }
-    }
 }
 
-double ProgressiveRender::progress() const {
-    const size_t samples = static_cast<size_t>(program_.aa * program_.aa);
+int GlProgressiveRender::drawsDone() const {
+    return static_cast<int>(next_) * program_.aa * program_.aa + subsample_;
+}
+
+int GlProgressiveRender::drawsTotal() const { return static_cast<int>(tiles_.size()) * program_.aa * program_.aa; }
+
+double GlProgressiveRender::progress() const {
     if (tiles_.empty()) return 1.0;
-    return static_cast<double>(next_ * samples + static_cast<size_t>(subsample_)) /
-           static_cast<double>(tiles_.size() * samples);
+    return static_cast<double>(drawsDone()) / static_cast<double>(drawsTotal());
 }
 
-std::vector<TileRect> ProgressiveRender::advance(double budgetSeconds) {
-    std::vector<TileRect> finished;
-    if (done()) return finished;
+std::vector<render::TileRect> GlProgressiveRender::advance(double budgetSeconds) {
+    const auto start = std::chrono::steady_clock::now();
+    bool first = true;
+    return draw([&] {
+        bool another = first || std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
+                                    budgetSeconds;
+        first = false;
+        return another;
+    });
+}
+
+std::vector<render::TileRect> GlProgressiveRender::draw(const std::function<bool()>& another,
+                                                        const std::function<void(int, int)>& afterEach) {
+    std::vector<render::TileRect> finished;
+    if (done() || !another()) return finished;
     const auto start = std::chrono::steady_clock::now();
     const int aa = program_.aa;
     renderer_.bindForDrawing(program_);
@@ -43,12 +54,12 @@ std::vector<TileRect> ProgressiveRender::advance(double budgetSeconds) {
     gl_.Viewport(0, 0, program_.width, program_.height);
     renderer_.setDrawState(true);
     do {
-        const TileRect& tile = tiles_[next_];
+        const render::TileRect& tile = tiles_[next_];
         gl_.Scissor(tile.x, program_.height - (tile.y + tile.h), tile.w, tile.h);
         gl_.BeginQuery(GL_TIME_ELAPSED, timer_.get());
         renderer_.drawSubsample(subsample_ / aa, subsample_ % aa);
         gl_.EndQuery(GL_TIME_ELAPSED);
-        // Wait for this draw only: the budget is measured on finished work.
+        // Wait for this draw only: budgets, cancel and progress are about finished work.
         GLsync fence = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         gl_.ClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 10'000'000'000ull);
         gl_.DeleteSync(fence);
@@ -61,12 +72,13 @@ std::vector<TileRect> ProgressiveRender::advance(double budgetSeconds) {
             subsample_ = 0;
             ++next_;
         }
-    } while (!done() && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < budgetSeconds);
+        if (afterEach) afterEach(drawsDone(), drawsTotal());
+    } while (!done() && another());
     drawSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     renderer_.setDrawState(false);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl_.UseProgram(0);
-    glcontext::checkGlError(gl_, "ProgressiveRender::advance");
+    glcontext::checkGlError(gl_, "GlProgressiveRender::draw");
     return finished;
 }
 

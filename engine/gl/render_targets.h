@@ -25,7 +25,4 @@ RenderTargets makeRenderTargets(const glcontext::GlFunctions& gl, int width, int
 void readFrameRegion(const glcontext::GlFunctions& gl, const RenderTargets& targets, int x, int y, int w, int h,
                      int samples, image::Frame& frame);
 
-// A frame of the given size with zeroed colour and statistics.
-image::Frame blankFrame(int width, int height);
-
 }  // namespace sdfwb::gl

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cpu/cpu_renderer.h"
 #include "parity/reference_scene.h"
 #include "program/compile_scene.h"
 
@@ -17,18 +16,19 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer, const ParityOptions& options) {
+ParityResult measureParity(const scene::Scene& scene, render::Backend& cpu, render::Backend& gl,
+                           const ParityOptions& options) {
     program::CompileOptions compileOptions{options.width, options.height, options.aa};
     program::Program program = program::compileScene(scene, compileOptions);
     ParityResult result;
 
     auto start = std::chrono::steady_clock::now();
-    cpu::RenderOutcome cpuFrame = cpu::renderCpu(program);
+    render::RenderOutcome cpuFrame = cpu.render(program);
     result.cpuSeconds = secondsSince(start);
 
-    glRenderer.prepare(program);  // shader build is not part of the render time
+    gl.prepare(program);  // shader build is not part of the render time
     start = std::chrono::steady_clock::now();
-    gl::GlRenderOutcome glFrame = glRenderer.render(program);
+    render::RenderOutcome glFrame = gl.render(program);
     result.glSeconds = secondsSince(start);
 
     image::FrameStats cpuStats = image::frameStats(cpuFrame.frame), glStats = image::frameStats(glFrame.frame);
@@ -42,9 +42,9 @@ ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer
     if (options.reference) {
         program::Program referenceProgram =
             program::compileScene(referenceScene(scene, options.referenceTightening), compileOptions);
-        cpu::RenderControl doublePrecision;
-        doublePrecision.precision = cpu::Precision::Double;
-        cpu::RenderOutcome reference = cpu::renderCpu(referenceProgram, doublePrecision);
+        render::RenderControl doublePrecision;
+        doublePrecision.precision = render::Precision::Double;
+        render::RenderOutcome reference = cpu.render(referenceProgram, doublePrecision);
         result.hasReference = true;
         result.referenceHitRatio = image::frameStats(reference.frame).hitRatio;
         result.cpuVsReference = image::compareImages(cpuFrame.frame.color, reference.frame.color);
@@ -55,8 +55,8 @@ ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer
     if (polynomialScene(scene)) {
         program::Program single = program::compileScene(scene, {options.width, options.height, 1});
         std::vector<std::optional<double>> reference = referenceDepths(scene, options.width, options.height);
-        result.cpuPolynomial = measureAccuracy(reference, cpu::renderCpu(single).frame);
-        result.glPolynomial = measureAccuracy(reference, glRenderer.render(single).frame);
+        result.cpuPolynomial = measureAccuracy(reference, cpu.render(single).frame);
+        result.glPolynomial = measureAccuracy(reference, gl.render(single).frame);
     }
     return result;
 }

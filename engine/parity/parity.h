@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "gl/gl_renderer.h"
 #include "image/compare.h"
 #include "parity/polynomial_reference.h"
+#include "render/render_backend.h"
 #include "scene/scene.h"
 
 namespace sdfwb::parity {
@@ -47,9 +47,11 @@ struct ParityResult {
     std::optional<PolynomialAccuracy> glPolynomial;
 };
 
-// Renders `scene` with the CPU (float) backend and with `glRenderer` (its
-// context current), and compares. Throws what the backends throw.
-ParityResult measureParity(const scene::Scene& scene, gl::GlRenderer& glRenderer, const ParityOptions& options);
+// Renders `scene` with `cpu`, the reference (float; double for the
+// reference of a hard case), and with `gl`, the backend checked against it,
+// and compares. Throws what the backends throw.
+ParityResult measureParity(const scene::Scene& scene, render::Backend& cpu, render::Backend& gl,
+                           const ParityOptions& options);
 
 // The hard-case gate: no NaN; each backend's hit ratio within 0.5 % (absolute,
 // of pixels) of the reference's; GL mean error against the reference at most

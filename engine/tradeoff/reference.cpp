@@ -103,11 +103,11 @@ std::optional<ReferenceFrame> obtainReference(const scene::Scene& referenceScene
         return ReferenceFrame{std::move(*cached), true, 0};
     }
     program::Program program = program::compileScene(referenceScene);
-    cpu::RenderControl control;
-    control.precision = cpu::Precision::Double;
+    render::RenderControl control;
+    control.precision = render::Precision::Double;
     control.cancel = cancel;
     auto start = std::chrono::steady_clock::now();
-    cpu::RenderOutcome outcome = cpu::renderCpu(program, control);
+    render::RenderOutcome outcome = cpu::renderCpu(program, control);
     if (outcome.cancelled) return std::nullopt;
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     storeReference(cacheDir, key, outcome.frame);

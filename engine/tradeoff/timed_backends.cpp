@@ -2,9 +2,8 @@
 
 #include <chrono>
 
-#include "cpu/cpu_renderer.h"
-#include "gl/gl_renderer.h"
-#include "glcontext/osmesa_context.h"
+#include "cpu/cpu_backend.h"
+#include "gl/gl_backend.h"
 
 namespace sdfwb::tradeoff {
 namespace {
@@ -13,50 +12,28 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-class CpuBackend final : public TimedBackend {
+// Any backend of the contract, timed; its prepare() builds (and warms up) shaders.
+class Timed final : public TimedBackend {
 public:
-    std::string name() const override { return "cpu"; }
-    void prepare(const program::Program&) override {}
+    explicit Timed(std::unique_ptr<render::Backend> backend) : backend_(std::move(backend)) {}
+    std::string name() const override { return backend_->name(); }
+    void prepare(const program::Program& program) override { backend_->prepare(program); }
     std::optional<TimedFrame> render(const program::Program& program, const std::atomic<bool>* cancel) override {
-        cpu::RenderControl control;
+        render::RenderControl control;
         control.cancel = cancel;
         auto start = std::chrono::steady_clock::now();
-        cpu::RenderOutcome outcome = cpu::renderCpu(program, control);
-        if (outcome.cancelled) return std::nullopt;
-        return TimedFrame{std::move(outcome.frame), secondsSince(start)};
-    }
-};
-
-class GlBackend final : public TimedBackend {
-public:
-    GlBackend() : context_(glcontext::OsMesaContext::create()), renderer_(context_->gl()) {}
-    std::string name() const override { return "gl"; }
-    void prepare(const program::Program& program) override {
-        renderer_.prepare(program);
-        // llvmpipe compiles the shader to machine code at its first draw: a
-        // tiny draw pays for that outside the timed renders
-        program::Program tiny = program;
-        tiny.width = tiny.height = 8;
-        tiny.aa = 1;
-        renderer_.render(tiny);
-    }
-    std::optional<TimedFrame> render(const program::Program& program, const std::atomic<bool>* cancel) override {
-        gl::GlRenderControl control;
-        control.cancel = cancel;
-        auto start = std::chrono::steady_clock::now();
-        gl::GlRenderOutcome outcome = renderer_.render(program, control);
+        render::RenderOutcome outcome = backend_->render(program, control);
         if (outcome.cancelled) return std::nullopt;
         return TimedFrame{std::move(outcome.frame), secondsSince(start)};
     }
 
 private:
-    std::unique_ptr<glcontext::OsMesaContext> context_;
-    gl::GlRenderer renderer_;
+    std::unique_ptr<render::Backend> backend_;
 };
 
 }  // namespace
 
-std::unique_ptr<TimedBackend> makeCpuBackend() { return std::make_unique<CpuBackend>(); }
-std::unique_ptr<TimedBackend> makeGlBackend() { return std::make_unique<GlBackend>(); }
+std::unique_ptr<TimedBackend> makeCpuBackend() { return std::make_unique<Timed>(std::make_unique<cpu::CpuBackend>()); }
+std::unique_ptr<TimedBackend> makeGlBackend() { return std::make_unique<Timed>(gl::GlBackend::headless()); }
 
 }  // namespace sdfwb::tradeoff

@@ -17,7 +17,7 @@ class EveryScene : public ::testing::TestWithParam<test::SceneFile> {};
 TEST_P(EveryScene, RendersFinitePixels) {
     scene::Scene s = scene::loadSceneFile(GetParam().path());
     program::Program p = program::compileScene(s, {.width = 64, .height = 36, .aa = 1});
-    cpu::RenderOutcome outcome = cpu::renderCpu(p);
+    render::RenderOutcome outcome = cpu::renderCpu(p);
     ASSERT_FALSE(outcome.cancelled);
     size_t nonFinite = 0;
     for (float v : outcome.frame.color.rgb) nonFinite += std::isfinite(v) ? 0 : 1;

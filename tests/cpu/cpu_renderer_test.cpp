@@ -23,9 +23,9 @@ scene::Scene defaultScene() { return scene::loadSceneFile(SDFWB_SOURCE_DIR "/sce
 
 TEST(CpuRenderer, OutputIsBitIdenticalForAnyThreadCount) {
     program::Program p = program::compileScene(defaultScene(), {.width = 96, .height = 54, .aa = 2});
-    cpu::RenderOutcome one = cpu::renderCpu(p, {.threads = 1, .tileSize = 16});
-    cpu::RenderOutcome two = cpu::renderCpu(p, {.threads = 2, .tileSize = 7});
-    cpu::RenderOutcome four = cpu::renderCpu(p, {.threads = 4, .tileSize = 32});
+    render::RenderOutcome one = cpu::renderCpu(p, {.threads = 1, .tileSize = 16});
+    render::RenderOutcome two = cpu::renderCpu(p, {.threads = 2, .tileSize = 7});
+    render::RenderOutcome four = cpu::renderCpu(p, {.threads = 4, .tileSize = 32});
     EXPECT_EQ(one.frame.color.rgb, two.frame.color.rgb);
     EXPECT_EQ(one.frame.color.rgb, four.frame.color.rgb);
     EXPECT_EQ(one.frame.steps, two.frame.steps);
@@ -36,9 +36,9 @@ TEST(CpuRenderer, CancelStopsAndSaysSo) {
     program::Program p = program::compileScene(defaultScene(), {.width = 200, .height = 120, .aa = 1});
     std::atomic<bool> cancel{false};
     int calls = 0;
-    cpu::RenderControl control{.threads = 1, .tileSize = 8, .cancel = &cancel,
+    render::RenderControl control{.threads = 1, .tileSize = 8, .cancel = &cancel,
                                .progress = [&](int done, int) { if (++calls == 3) cancel = true; (void)done; }};
-    cpu::RenderOutcome outcome = cpu::renderCpu(p, control);
+    render::RenderOutcome outcome = cpu::renderCpu(p, control);
     EXPECT_TRUE(outcome.cancelled);
     EXPECT_EQ(calls, 3);
 }
@@ -63,7 +63,7 @@ TEST(CpuRenderer, CoverageOfASphereMatchesRaySphereIntersection) {
     s.render.epsilon = 1e-5;
     const int w = 64, h = 48;
     program::Program p = program::compileScene(s, {.width = w, .height = h, .aa = 1});
-    cpu::RenderOutcome outcome = cpu::renderCpu(p, {.precision = cpu::Precision::Double});
+    render::RenderOutcome outcome = cpu::renderCpu(p, {.precision = render::Precision::Double});
     double t = std::tan(20.0 * M_PI / 180.0);
     int checked = 0;
     for (int y = 0; y < h; ++y) {
@@ -86,7 +86,7 @@ TEST(CpuRenderer, CoverageOfASphereMatchesRaySphereIntersection) {
 // change of compiler or libm does not fail it but a change of shading does.
 TEST(CpuRenderer, DefaultSceneMatchesTheRegressionImage) {
     program::Program p = program::compileScene(defaultScene(), {.width = 160, .height = 90, .aa = 2});
-    cpu::RenderOutcome outcome = cpu::renderCpu(p);
+    render::RenderOutcome outcome = cpu::renderCpu(p);
     std::filesystem::path golden = SDFWB_SOURCE_DIR "/tests/data/default_160x90.png";
     std::filesystem::create_directories(SDFWB_TEST_OUTPUT_DIR);
     std::filesystem::path actual = std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "default_160x90.png";

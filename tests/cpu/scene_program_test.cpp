@@ -26,7 +26,7 @@ Node sphereAt(glm::dvec3 centre, double radius) {
 }
 
 // Distance at a world point, through the compiled program (march coordinates are eye-relative).
-double distanceAt(const scene::Scene& s, glm::dvec3 world, cpu::Precision precision = cpu::Precision::Double) {
+double distanceAt(const scene::Scene& s, glm::dvec3 world, render::Precision precision = render::Precision::Double) {
     program::Program p = program::compileScene(s);
     glm::dvec3 eye = s.camera.target + glm::dvec3(0, 0, s.camera.distance);  // azimuth 0, elevation 0
     return cpu::evaluateDistance(p, world - eye, precision);
@@ -90,7 +90,7 @@ TEST(SceneProgram, FarFromTheOriginTheFloatBuildKeepsPrecision) {
     s.camera.distance = 3;
     glm::dvec3 probe(1e4 + 0.0123, 1e4 + 1.5, -1e4 + 0.0456);
     double exact = glm::length(probe - glm::dvec3(1e4, 1e4, -1e4)) - 1;
-    EXPECT_NEAR(distanceAt(s, probe, cpu::Precision::Float), exact, 1e-5);
+    EXPECT_NEAR(distanceAt(s, probe, render::Precision::Float), exact, 1e-5);
 }
 
 TEST(SceneProgram, ImplicitIsTheSolidOrASheetAroundTheSurface) {

@@ -106,8 +106,8 @@ TEST_F(GlRendererTest, ParameterEditsCompileNothingStructuralEditsCompileOnce) {
 TEST_F(GlRendererTest, FrameMatchesTheCpuBackendLayout) {
     program::Program p = program::compileScene(defaultScene(), {.width = 48, .height = 27, .aa = 2});
     gl::GlRenderer renderer(gl());
-    gl::GlRenderOutcome glFrame = renderer.render(p, {.tileSize = 16});
-    cpu::RenderOutcome cpuFrame = cpu::renderCpu(p);
+    render::RenderOutcome glFrame = renderer.render(p, {.tileSize = 16});
+    render::RenderOutcome cpuFrame = cpu::renderCpu(p);
     ASSERT_EQ(glFrame.frame.color.width, 48);
     ASSERT_EQ(glFrame.frame.color.height, 27);
     EXPECT_EQ(glFrame.frame.coverage, cpuFrame.frame.coverage);
@@ -121,7 +121,7 @@ TEST_F(GlRendererTest, CancelBetweenDrawsReportsCancelled) {
     program::Program p = program::compileScene(defaultScene(), {.width = 64, .height = 64, .aa = 2});
     gl::GlRenderer renderer(gl());
     std::atomic<bool> cancel{false};
-    gl::GlRenderOutcome outcome =
+    render::RenderOutcome outcome =
         renderer.render(p, {.tileSize = 16, .cancel = &cancel, .progress = [&](int done, int) { cancel = done >= 2; }});
     EXPECT_TRUE(outcome.cancelled);
 }

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "cpu/cpu_backend.h"
+#include "gl/gl_backend.h"
 #include "gl_test_support.h"
 #include "parity/parity.h"
 #include "scene/scene_json.h"
@@ -20,9 +22,10 @@ class Parity : public test::GlTest, public ::testing::WithParamInterface<test::S
 TEST_P(Parity, BackendsAgree) {
     const test::SceneFile& file = GetParam();
     scene::Scene s = scene::loadSceneFile(file.path());
-    gl::GlRenderer renderer(gl());
+    cpu::CpuBackend cpu;
+    gl::GlBackend glBackend(context());
     parity::ParityOptions options{.width = 320, .height = 180, .aa = 2, .reference = file.isHardCase()};
-    parity::ParityResult r = parity::measureParity(s, renderer, options);
+    parity::ParityResult r = parity::measureParity(s, cpu, glBackend, options);
     std::cout << parity::tableHeader(options.reference) << parity::tableRow(file.relative, r, options.reference);
     EXPECT_EQ(r.cpuNonFinite, 0u);
     EXPECT_EQ(r.glNonFinite, 0u);
@@ -53,8 +56,9 @@ TEST_F(LargeScene, ThousandNodeSceneHasParity) {
         translate.children.push_back(sphere);
         s.root.children.push_back(translate);
     }
-    gl::GlRenderer renderer(gl());
-    parity::ParityResult r = parity::measureParity(s, renderer, {.width = 96, .height = 54, .aa = 1});
+    cpu::CpuBackend cpu;
+    gl::GlBackend glBackend(context());
+    parity::ParityResult r = parity::measureParity(s, cpu, glBackend, {.width = 96, .height = 54, .aa = 1});
     std::cout << parity::tableHeader(false) << parity::tableRow("1000 nodes (generated)", r, false);
     EXPECT_TRUE(r.passes);
     EXPECT_GT(r.glHitRatio, 0.2);

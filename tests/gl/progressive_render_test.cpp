@@ -5,9 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <thread>
-
 #include "gl/program_builder.h"
 #include "gl/progressive_render.h"
 #include "gl_test_support.h"
@@ -27,8 +24,8 @@ class ProgressiveRenderTest : public test::GlTest {};
 TEST_F(ProgressiveRenderTest, ManySmallStepsGiveTheFrameOfOneRender) {
     gl::GlRenderer renderer(gl());
     program::Program p = smallDefault(2);
-    gl::GlRenderOutcome whole = renderer.render(p, {32, nullptr, {}});
-    gl::ProgressiveRender progressive(renderer, p, 32);
+    render::RenderOutcome whole = renderer.render(p, {.tileSize = 32});
+    gl::GlProgressiveRender progressive(renderer, p, 32);
     int calls = 0, tiles = 0;
     while (!progressive.done()) {
         tiles += static_cast<int>(progressive.advance(0.0).size());  // one draw per call
@@ -50,19 +47,16 @@ TEST_F(ProgressiveRenderTest, WorkerBuiltProgramIsAdoptedWithoutACompile) {
         gl::ProgramBuilder builder(context().createShared());
         builder.request(p);
         builder.request(p);  // a duplicate request is ignored
-        for (int i = 0; i < 6000 && !built; ++i) {
-            built = builder.take();
-            if (!built) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-        ASSERT_TRUE(built) << "the worker did not finish within a minute";
+        builder.wait();
         EXPECT_FALSE(builder.busy());
+        built = builder.take();
+        ASSERT_TRUE(built);
         EXPECT_FALSE(builder.take());
     }
     ASSERT_TRUE(built->linked) << built->error;
-    EXPECT_GT(built->seconds, 0.0);
     renderer.adoptProgram(built->program, std::move(built->linked));
     EXPECT_TRUE(renderer.hasProgram(p));
-    gl::GlRenderOutcome adopted = renderer.render(p);
+    render::RenderOutcome adopted = renderer.render(p);
     EXPECT_EQ(renderer.counters().compiles, 0);
 
     gl::GlRenderer fresh(gl());

@@ -1,0 +1,31 @@
+#include "app/gui/view_choice.h"
+
+namespace sdfwb::app::gui {
+
+bool refinesInPlace(const ImageContent& texture, std::uint64_t state) { return texture.state == state; }
+
+SlotView chooseSlot(Source wanted, const ImageContent (&textures)[kSources], std::uint64_t state, bool interacting) {
+    const Source other = wanted == Source::Gl ? Source::Cpu : Source::Gl;
+    const ImageContent& mine = textures[static_cast<int>(wanted)];
+    const ImageContent& theirs = textures[static_cast<int>(other)];
+    if (mine.state == state) return {wanted, SlotView::Note::None};
+    if (theirs.state == state) return {other, SlotView::Note::StandIn};
+    if (!mine.empty()) return {wanted, interacting ? SlotView::Note::None : SlotView::Note::Outdated};
+    if (!theirs.empty()) return {other, interacting ? SlotView::Note::None : SlotView::Note::Outdated};
+    return {wanted, SlotView::Note::Empty};
+}
+
+LanePlan planLanes(Source wanted, bool compare, bool glReady, bool glFailed) {
+    LanePlan plan;
+    plan.renders[static_cast<int>(wanted)] = true;
+    if (compare) {
+        plan.renders[static_cast<int>(Source::Gl)] = plan.renders[static_cast<int>(Source::Cpu)] = true;
+    } else if (wanted == Source::Gl && (!glReady || glFailed)) {
+        plan.renders[static_cast<int>(Source::Cpu)] = true;
+        plan.standIn = true;
+    }
+    if (glFailed) plan.renders[static_cast<int>(Source::Gl)] = false;
+    return plan;
+}
+
+}  // namespace sdfwb::app::gui

@@ -1,0 +1,56 @@
+#pragma once
+// The viewport's decisions, apart from GL and threads so tests can drive
+// them: which backends render for the current request, which image each
+// view slot shows, and whether a render may refine a texture tile by tile.
+//
+// The rule they keep: the viewport never shows an image of another scene
+// state than the current one without saying so, and never a mix of two
+// states. A state is what the image depends on (the scene revision, the
+// image size, the step-heat view), not which backend draws it.
+
+#include <cstdint>
+
+namespace sdfwb::app::gui {
+
+enum class Source { Gl = 0, Cpu = 1 };
+constexpr int kSources = 2;
+
+// What one backend's texture holds.
+struct ImageContent {
+    std::uint64_t state = 0;  // the state it shows; 0: nothing yet
+    int stage = -1;           // the last stage completed for it
+    bool empty() const { return state == 0; }
+};
+
+// A render's tiles may go straight into the texture when it already holds
+// the same state (a preview or a lower AA is refined); otherwise they wait
+// and the finished stage replaces the image at once.
+bool refinesInPlace(const ImageContent& texture, std::uint64_t state);
+
+// What a view slot draws and what it must say about it.
+struct SlotView {
+    Source shown = Source::Gl;
+    enum class Note {
+        None,      // the wanted backend's image of the current state
+        StandIn,   // the other backend's image of the current state, until the wanted one is ready
+        Outdated,  // an image of an earlier state, while the current one renders
+        Empty,     // nothing rendered yet
+    } note = Note::None;
+};
+
+// The slot that wants `wanted`'s image of `state`, given what both textures
+// hold. While `interacting` (a drag) the last preview follows within a frame
+// or two, so an older image is shown without the Outdated note.
+SlotView chooseSlot(Source wanted, const ImageContent (&textures)[kSources], std::uint64_t state, bool interacting);
+
+// Which backends render for a request: the wanted one, both when comparing,
+// and the CPU standing in while the GL program of a new structure builds or
+// when it failed (the CPU reference always works). A stand-in stops as soon
+// as the GL backend is ready, so the cores go to the faster path.
+struct LanePlan {
+    bool renders[kSources] = {false, false};
+    bool standIn = false;  // the CPU renders in place of the GL backend
+};
+LanePlan planLanes(Source wanted, bool compare, bool glReady, bool glFailed);
+
+}  // namespace sdfwb::app::gui

@@ -1,0 +1,30 @@
+#pragma once
+// How a caller steers one render and what it gets back, the same for every
+// backend (render/render_backend.h).
+
+#include <atomic>
+#include <functional>
+
+#include "image/image.h"
+
+namespace sdfwb::render {
+
+// The CPU backend's arithmetic; the GL backend always renders in float.
+enum class Precision { Float, Double };
+
+struct RenderControl {
+    int threads = 0;   // CPU worker threads; 0: all hardware threads
+    int tileSize = 0;  // pixels per side of a tile; 0: the backend's default
+    Precision precision = Precision::Float;
+    const std::atomic<bool>* cancel = nullptr;  // checked before each tile (GL: each draw)
+    // Called as work completes (tiles on the CPU, draws on GL), one call at a
+    // time, from whichever thread did the work.
+    std::function<void(int done, int total)> progress = {};
+};
+
+struct RenderOutcome {
+    image::Frame frame;  // empty when cancelled
+    bool cancelled = false;
+};
+
+}  // namespace sdfwb::render

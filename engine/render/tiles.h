@@ -1,0 +1,24 @@
+#pragma once
+// The tile layout every render walks (CPU tiles across threads, GL draws
+// within a time budget), and the frame tiles are written into.
+
+#include <vector>
+
+#include "image/image.h"
+
+namespace sdfwb::render {
+
+// A rectangle of the frame, rows counted from the top.
+struct TileRect {
+    int x = 0, y = 0, w = 0, h = 0;
+    friend bool operator==(const TileRect&, const TileRect&) = default;
+};
+
+// Row by row from the top left, `tile` pixels per side (edge tiles are
+// cropped to the frame); empty for an empty frame. Requires tile >= 1.
+std::vector<TileRect> tileGrid(int width, int height, int tile);
+
+// A frame of the given size with zeroed colour and statistics.
+image::Frame blankFrame(int width, int height);
+
+}  // namespace sdfwb::render
