@@ -149,21 +149,13 @@ scene::Node polynomialNode(const PolynomialOutcome& outcome, double sheetThickne
     return node;
 }
 
-PolynomialJob::~PolynomialJob() {
-    cancel();
-    wait();
-}
+PolynomialJob::~PolynomialJob() { cancel(); }
 
 void PolynomialJob::start(PolynomialRequest request) {
     cancel();
-    wait();
     cancel_ = std::make_shared<algebra::CancelToken>();
-    {
-        std::lock_guard lock(shared_->mutex);
-        shared_->running = true;
-        shared_->progress = {};
-        shared_->started = std::chrono::steady_clock::now();
-    }
+    shared_ = std::make_shared<Shared>();  // a superseded job keeps writing into its own
+    shared_->started = std::chrono::steady_clock::now();
     algebra::Budget budget;
     budget.time_limit_seconds = request.timeLimitSeconds;
     budget.memory_limit_bytes = kMemoryLimitBytes;
@@ -178,11 +170,10 @@ void PolynomialJob::start(PolynomialRequest request) {
         if (p.primes > 0) stage += " (" + std::to_string(p.primes) + (p.primes == 1 ? " prime)" : " primes)");
         shared->progress = {p.elapsed_seconds, p.basis_size, p.pairs_left, std::move(stage)};
     };
-    worker_ = std::thread([shared, request = std::move(request), budget = std::move(budget)] {
+    job_ = queue_.submit([shared, request = std::move(request), budget = std::move(budget)](jobs::Job&) {
         PolynomialOutcome outcome = computePolynomial(request, budget);
         std::lock_guard lock(shared->mutex);
         shared->outcome = std::move(outcome);
-        shared->running = false;
     });
 }
 
@@ -190,16 +181,13 @@ void PolynomialJob::cancel() {
     if (cancel_) cancel_->cancel();
 }
 
-bool PolynomialJob::running() const {
-    std::lock_guard lock(shared_->mutex);
-    return shared_->running;
-}
+bool PolynomialJob::running() const { return job_ && !job_->finished(); }
 
 PolynomialProgress PolynomialJob::progress() const {
     std::lock_guard lock(shared_->mutex);
     PolynomialProgress now = shared_->progress;
     // the engine reports every 0.1 s at best; the clock keeps moving between
-    if (shared_->running) {
+    if (running()) {
         now.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - shared_->started).count();
     }
     return now;
@@ -210,8 +198,33 @@ std::optional<PolynomialOutcome> PolynomialJob::outcome() const {
     return shared_->outcome;
 }
 
-void PolynomialJob::wait() {
-    if (worker_.joinable()) worker_.join();
+void PolynomialJob::wait() const {
+    if (job_) job_->wait();
+}
+
+void ParameterCheck::request(const std::string& equations, std::vector<ParameterRange> previous) {
+    if (requested_ == equations) return;
+    requested_ = equations;
+    queue_.cancelAll();  // an older text still queued is dropped
+    result_ = std::make_shared<Result>();
+    result_->equations = equations;
+    job_ = queue_.submit([result = result_, previous = std::move(previous)](jobs::Job&) {
+        try {
+            result->ranges = parameterRanges(result->equations, previous);
+        } catch (const std::exception& error) {
+            result->problem = error.what();
+        }
+    });
+}
+
+std::optional<ParameterCheck::Result> ParameterCheck::take() {
+    if (!job_ || !job_->finished()) return std::nullopt;
+    job_.reset();
+    return std::move(*result_);
+}
+
+void ParameterCheck::wait() const {
+    if (job_) job_->wait();
 }
 
 }  // namespace sdfwb::ui

@@ -1,8 +1,9 @@
 #pragma once
 // The polynomial panel's background work, apart from its widgets: implicitize
-// parametric equations on a worker thread under a Budget (cancel flag, time
-// and memory limits), publish its progress for the UI thread to read each
-// frame, and turn the result into a `polynomial` scene node.
+// parametric equations as a background job (jobs/job_queue.h) under a Budget
+// (cancel flag, time and memory limits), publish its progress for the UI
+// thread to read each frame, read the equations' parameters off the UI
+// thread, and turn the result into a `polynomial` scene node.
 
 #include <chrono>
 #include <cstdint>
@@ -11,7 +12,6 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,6 +19,7 @@
 #include "algebra/budget.h"
 #include "algebra/implicitization.h"
 #include "expr/trig.h"
+#include "jobs/job_queue.h"
 #include "scene/scene.h"
 
 namespace sdfwb::ui {
@@ -66,8 +67,9 @@ struct PolynomialProgress {
     std::string stage;  // "buchberger", "interpolation (3 primes)", ...
 };
 
-// One computation at a time. The worker never touches the scene: the UI
-// thread polls outcome() and adds the node through the Editor itself.
+// One computation at a time: a new start() cancels the running one and
+// supersedes it (its result is dropped). The worker never touches the scene:
+// the UI thread polls outcome() and adds the node through the Editor itself.
 class PolynomialJob {
 public:
     PolynomialJob() = default;
@@ -77,7 +79,7 @@ public:
     // engine's next safe point).
     ~PolynomialJob();
 
-    // Starts `request` (cancelling and waiting for a running one first).
+    // Starts `request`, cancelling a running one; never waits.
     void start(PolynomialRequest request);
     // Asks the worker to stop; outcome() then reports "cancelled".
     void cancel();
@@ -85,20 +87,48 @@ public:
     PolynomialProgress progress() const;
     // The last finished computation's result (nullopt while none finished).
     std::optional<PolynomialOutcome> outcome() const;
-    // Waits for the worker (tests; the UI polls instead).
-    void wait();
+    // Waits for the computation (tests and scripts; the UI polls instead).
+    void wait() const;
 
 private:
     struct Shared {
         mutable std::mutex mutex;
-        bool running = false;
         std::chrono::steady_clock::time_point started;
         PolynomialProgress progress;
         std::optional<PolynomialOutcome> outcome;
     };
     std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
     std::shared_ptr<algebra::CancelToken> cancel_;
-    std::thread worker_;
+    jobs::JobHandle job_;
+    jobs::JobQueue queue_{1};  // last: stops before the rest goes
+};
+
+// The parameters of equations (parameterRanges), read off the UI thread:
+// reading converts the equations, which can expand large powers. A newer
+// text supersedes one still queued; the UI applies the newest result when
+// it is ready.
+class ParameterCheck {
+public:
+    struct Result {
+        std::string equations;               // the text checked
+        std::vector<ParameterRange> ranges;  // when `problem` is ""
+        std::string problem;                 // why the equations cannot run, with a column
+    };
+    // Checks `equations` (keeping `previous` ranges, as parameterRanges
+    // does) unless they are the text last requested.
+    void request(const std::string& equations, std::vector<ParameterRange> previous);
+    // The newest request's result, once, when it is ready.
+    std::optional<Result> take();
+    // A request's result is not taken yet.
+    bool pending() const { return job_ != nullptr; }
+    // Waits for the newest request (scripts and tests; the UI polls).
+    void wait() const;
+
+private:
+    std::optional<std::string> requested_;
+    jobs::JobHandle job_;
+    std::shared_ptr<Result> result_;  // written by the job
+    jobs::JobQueue queue_{1};         // last: stops before the rest goes
 };
 
 // Runs a request on the calling thread (the worker's body).

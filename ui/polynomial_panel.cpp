@@ -52,8 +52,12 @@ void requestWidgets(PolynomialPanelState& state) {
                        "of parameters are converted exactly)");
     ImGui::PopStyleColor();
     ImGui::InputTextMultiline("##equations", &r.equations, ImVec2(-1, ImGui::GetTextLineHeight() * 4 + 8));
-    readParameters(state);
-    problemText(state.problem);
+    checkParameters(state);
+    if (parametersCurrent(state)) {
+        problemText(state.problem);
+    } else {
+        ImGui::TextDisabled("reading the equations...");
+    }
     orderCombo(r.order);
     int trig = r.trig == expr::TrigStrategy::CosSinRelation ? 0 : 1;
     ImGui::RadioButton("cos-sin variables", &trig, 0);
@@ -91,16 +95,22 @@ void outcomeWidgets(Editor& editor, UiState& ui, PolynomialPanelState& state, co
 
 }  // namespace
 
-void readParameters(PolynomialPanelState& state) {
-    if (state.request.equations == state.readEquations) return;
-    state.readEquations = state.request.equations;
-    try {
-        state.ranges = parameterRanges(*state.readEquations, state.ranges);
-        state.problem.clear();
-    } catch (const std::exception& error) {
-        state.problem = error.what();
+void checkParameters(PolynomialPanelState& state) {
+    if (state.request.equations != state.readEquations) state.check.request(state.request.equations, state.ranges);
+    if (std::optional<ParameterCheck::Result> read = state.check.take()) {
+        state.readEquations = std::move(read->equations);
+        state.problem = std::move(read->problem);
+        if (state.problem.empty()) state.ranges = std::move(read->ranges);
     }
 }
+
+void readParameters(PolynomialPanelState& state) {
+    checkParameters(state);
+    state.check.wait();
+    checkParameters(state);
+}
+
+bool parametersCurrent(const PolynomialPanelState& state) { return state.readEquations == state.request.equations; }
 
 void runPolynomial(PolynomialPanelState& state) {
     PolynomialRequest request = state.request;
@@ -134,7 +144,7 @@ void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& stat
             ImGui::Text("%.1f s  basis %zu  pairs left %zu  %s", p.elapsedSeconds, p.basisSize, p.pairsLeft,
                         p.stage.c_str());
         } else {
-            ImGui::BeginDisabled(!state.problem.empty());
+            ImGui::BeginDisabled(!state.problem.empty() || !parametersCurrent(state));
             if (ImGui::Button("Run")) runPolynomial(state);
             ImGui::EndDisabled();
             if (std::optional<PolynomialOutcome> outcome = state.job.outcome()) outcomeWidgets(editor, ui, state, *outcome);

@@ -24,15 +24,22 @@ struct PolynomialPanelState {
     std::vector<ParameterRange> ranges;  // of the equations as last read
     std::optional<std::string> readEquations;  // the text `ranges` and `problem` describe
     std::string problem;                 // why those equations cannot run, "" when they can
+    ParameterCheck check;                // reads the equations off the UI thread
     double sheetThickness = 0;           // of the node added: 0 the solid F <= 0, else a sheet
     LongTextBoxState resultText;         // the result's box: the path it is saved to
     PolynomialJob job;
 };
 
-// Re-reads the equations when they changed since the last call: the ranges of
-// parameters still present are kept, new parameters get their defaults, and
-// `problem` says why the equations cannot run (with a column) or is cleared.
+// Re-reads the equations when they changed since the last call, in the
+// background: once read, the ranges of parameters still present are kept,
+// new parameters get their defaults, and `problem` says why the equations
+// cannot run (with a column) or is cleared. Never waits (the panel calls it
+// every frame); until the current text is read, parametersCurrent() is false.
+void checkParameters(PolynomialPanelState& state);
+// checkParameters, then waits until the current text is read (scripts, tests).
 void readParameters(PolynomialPanelState& state);
+// `ranges` and `problem` describe the equations as they are now.
+bool parametersCurrent(const PolynomialPanelState& state);
 
 // Starts the job on the panel's request, the ranges included (after
 // readParameters; requires an empty `problem`).
