@@ -25,9 +25,8 @@ Viewport::Viewport(glcontext::GlContext& context) : context_(context), differenc
     // The one place the viewport names its backends: the GL backend builds
     // programs on a worker with a context sharing the window's.
     lanes_.reserve(kSources);
-    lanes_.push_back({Source::Gl, std::make_unique<gl::GlBackend>(context, context.createShared()),
-                      DisplayTexture(context.gl())});
-    lanes_.push_back({Source::Cpu, std::make_unique<cpu::CpuBackend>(), DisplayTexture(context.gl())});
+    lanes_.emplace_back(Source::Gl, std::make_unique<gl::GlBackend>(context, context.createShared()), context.gl());
+    lanes_.emplace_back(Source::Cpu, std::make_unique<cpu::CpuBackend>(), context.gl());
 }
 
 Viewport::~Viewport() = default;

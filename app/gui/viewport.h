@@ -77,6 +77,8 @@ private:
     };
     // One backend with its texture and its share of the current request.
     struct Lane {
+        Lane(Source source, std::unique_ptr<render::Backend> backend, const glcontext::GlFunctions& gl)
+            : source(source), backend(std::move(backend)), texture(gl) {}
         Source source;
         std::unique_ptr<render::Backend> backend;
         DisplayTexture texture;
