@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "ui/editor.h"
+#include "ui/primitive_library.h"
 #include "ui/ui_state.h"
 
 namespace sdfwb::ui {
@@ -28,8 +29,9 @@ void drawLightsPanel(Editor& editor, UiState& ui);
 void drawRenderSettingsPanel(Editor& editor, UiState& ui);
 void drawEnvironmentPanel(Editor& editor, UiState& ui);
 // The primitive library (ui/primitive_library.h): insert an entry next to or
-// into the selection, save the selection under ui.libraryName.
-void drawLibraryPanel(Editor& editor, UiState& ui);
+// into the selection, save the selection under ui.libraryName, remove an
+// entry (with an Undo until the next removal).
+void drawLibraryPanel(Editor& editor, UiState& ui, PrimitiveLibrary& library);
 
 // The Add menu's items (primitives and n-ary booleans) and the Wrap menu's
 // (every kind that takes children); each calls Editor::add or Editor::wrap on

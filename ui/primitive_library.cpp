@@ -8,39 +8,44 @@
 #include "ui/user_paths.h"
 
 namespace sdfwb::ui {
-namespace {
 
-std::filesystem::path folder() { return configDirectory() / "primitives"; }
+PrimitiveLibrary::PrimitiveLibrary() : PrimitiveLibrary(configDirectory() / "primitives") {}
 
-std::filesystem::path fileOf(const std::string& name) {
+PrimitiveLibrary::PrimitiveLibrary(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+std::filesystem::path PrimitiveLibrary::fileOf(const std::string& name) const {
     bool valid = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) || c == ' ' || c == '-' || c == '_';
     });
     if (!valid) {
         throw std::runtime_error("library name \"" + name + "\": use letters, digits, spaces, '-' or '_'");
     }
-    return folder() / (name + ".json");
+    return folder_ / (name + ".json");
 }
 
-}  // namespace
+const std::vector<std::string>& PrimitiveLibrary::entries() {
+    if (!entries_) refresh();
+    return *entries_;
+}
 
-std::vector<std::string> libraryEntries() {
+void PrimitiveLibrary::refresh() {
     std::vector<std::string> names;
     std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder(), error)) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
         if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
     }
     std::sort(names.begin(), names.end());
-    return names;
+    entries_ = std::move(names);
 }
 
-void saveLibraryEntry(const std::string& name, const scene::Node& node) {
+void PrimitiveLibrary::save(const std::string& name, const scene::Node& node) {
     std::filesystem::path file = fileOf(name);
-    std::filesystem::create_directories(folder());
+    std::filesystem::create_directories(folder_);
     io::writeTextAtomically(file, scene::nodeToJson(node).dump(2) + "\n");
+    refresh();
 }
 
-scene::Node loadLibraryEntry(const std::string& name) {
+scene::Node PrimitiveLibrary::load(const std::string& name) const {
     std::filesystem::path file = fileOf(name);
     std::string text = io::readTextFile(file);
     nlohmann::ordered_json json;
@@ -52,6 +57,25 @@ scene::Node loadLibraryEntry(const std::string& name) {
     return scene::nodeFromJson(json, file.string());
 }
 
-void removeLibraryEntry(const std::string& name) { std::filesystem::remove(fileOf(name)); }
+void PrimitiveLibrary::remove(const std::string& name) {
+    std::filesystem::path file = fileOf(name);
+    std::string text = io::readTextFile(file);
+    std::error_code error;
+    if (!std::filesystem::remove(file, error) || error) {
+        throw std::runtime_error("cannot remove " + file.string() + (error ? ": " + error.message() : ""));
+    }
+    removedName_ = name;
+    removedText_ = std::move(text);
+    refresh();
+}
+
+void PrimitiveLibrary::restoreRemoved() {
+    if (!removedName_) return;
+    std::filesystem::create_directories(folder_);
+    io::writeTextAtomically(fileOf(*removedName_), removedText_);
+    removedName_.reset();
+    removedText_.clear();
+    refresh();
+}
 
 }  // namespace sdfwb::ui

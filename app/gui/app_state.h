@@ -16,6 +16,7 @@
 #include "app/gui/thumbnails.h"
 #include "app/gui/viewport.h"
 #include "ui/polynomial_panel.h"
+#include "ui/primitive_library.h"
 #include "ui/editor.h"
 #include "ui/script.h"
 #include "ui/ui_state.h"
@@ -65,6 +66,7 @@ struct AppState {
     ui::Editor editor;
     ui::UiState ui;
     ui::PolynomialPanelState polynomial;  // View > Polynomial
+    ui::PrimitiveLibrary library;         // the Library tab's files, listed once
     std::unique_ptr<Viewport> viewport;
     std::unique_ptr<Thumbnails> thumbnails;
     SnapshotExport snapshot;

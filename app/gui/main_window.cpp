@@ -218,7 +218,7 @@ void inspectorPanel(AppState& app, ImVec2 origin, float height) {
                 ImGui::EndTabItem();
             }
             if (tab("Library", Tab::Library)) {
-                ui::drawLibraryPanel(app.editor, app.ui);
+                ui::drawLibraryPanel(app.editor, app.ui, app.library);
                 ImGui::EndTabItem();
             }
             app.ui.showTab.reset();

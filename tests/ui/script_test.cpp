@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <thread>
 
 #include "scene/scene_json.h"
 #include "ui/script.h"
@@ -161,11 +160,13 @@ TEST(ScriptRunTest, WaitIdleTimesOut) {
     EXPECT_EQ(runner.error().rfind("s:1: wait: still busy after 0 s", 0), 0u) << runner.error();
 }
 
+// Steps the script as frames would, waiting for the polynomial job between
+// steps (an event, not a clock) where the GUI would keep drawing.
 ScriptStatus runUntilDone(ScriptRunner& runner, Editor& editor, UiState& ui, FakeHost& host) {
     ScriptStatus status = ScriptStatus::Running;
-    for (int frame = 0; frame < 6000 && status == ScriptStatus::Running; ++frame) {
+    for (int frame = 0; frame < 100 && status == ScriptStatus::Running; ++frame) {
         status = runner.step(editor, ui, host);
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        host.polynomial.job.wait();
     }
     return status;
 }
