@@ -18,14 +18,16 @@ std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& pa
     std::vector<std::filesystem::path> files;
     for (const std::string& path : paths) {
         if (std::filesystem::is_directory(path)) {
+            std::vector<std::filesystem::path> found;
             for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
-                if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+                if (entry.is_regular_file() && entry.path().extension() == ".json") found.push_back(entry.path());
             }
+            std::sort(found.begin(), found.end());
+            files.insert(files.end(), found.begin(), found.end());
         } else {
             files.emplace_back(path);
         }
     }
-    std::sort(files.begin(), files.end());
     return files;
 }
 

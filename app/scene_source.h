@@ -18,7 +18,8 @@ std::string_view defaultSceneJson();
 // Throws scene::SceneError.
 scene::Scene loadSceneArgument(const std::string& argument);
 
-// The .json files among `paths`, folders searched recursively, sorted.
+// The .json files among `paths` in their order, each folder's searched
+// recursively and sorted.
 std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths);
 
 }  // namespace sdfwb::app

@@ -1,16 +1,21 @@
 #include "app/tradeoff_command.h"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <thread>
+
+#include <sys/resource.h>
 
 #include "app/progress_bar.h"
 #include "app/scene_source.h"
 #include "app/size_argument.h"
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
+#include "tradeoff/measurements.h"
 #include "tradeoff/plot.h"
 #include "tradeoff/report.h"
 #include "tradeoff/sweep.h"
@@ -23,15 +28,6 @@ namespace fs = std::filesystem;
 std::atomic<bool> interrupted{false};
 
 extern "C" void onTradeoffInterrupt(int) { interrupted = true; }
-
-fs::path defaultCacheDir() {
-    const char* xdg = std::getenv("XDG_CACHE_HOME");
-    const char* home = std::getenv("HOME");
-    fs::path base = xdg != nullptr && *xdg != '\0' ? fs::path(xdg)
-                    : home != nullptr            ? fs::path(home) / ".cache"
-                                                 : fs::temp_directory_path();
-    return base / "sdf-workbench" / "references";
-}
 
 // The scene's path as given, "scenes/hard/thin_blade.json" -> "scenes-hard-thin_blade.png"
 std::string plotFileName(const std::string& sceneName) {
@@ -49,6 +45,18 @@ std::string formatDuration(double seconds) {
     if (s >= 3600) out << s / 3600 << " h ";
     if (s >= 60) out << (s / 60) % 60 << " min ";
     out << s % 60 << " s";
+    return out.str();
+}
+
+// Timings depend on the machine and on what else runs on it.
+std::string machineText() {
+    double load[1] = {0};
+    std::ostringstream out;
+    out << "on " << std::thread::hardware_concurrency() << " hardware threads";
+    if (::getloadavg(load, 1) == 1) out << " (load average " << load[0] << " at the start)";
+    errno = 0;
+    int niceness = ::getpriority(PRIO_PROCESS, 0);
+    if (errno == 0) out << ", at niceness " << niceness;
     return out.str();
 }
 
@@ -124,7 +132,7 @@ int runTradeoff(const TradeoffArguments& a) {
         options.height = height;
         options.repetitions = a.repetitions;
         if (a.budget > 0) options.budgetSeconds = a.budget;
-        options.cacheDir = a.cacheDir.empty() ? defaultCacheDir() : fs::path(a.cacheDir);
+        options.cacheDir = a.cacheDir.empty() ? tradeoff::defaultCacheDirectory() : fs::path(a.cacheDir);
         options.cancel = &interrupted;
         ProgressBar bar("tradeoff");
         options.progress = [&](const tradeoff::SweepProgress& p) {
@@ -136,13 +144,14 @@ int runTradeoff(const TradeoffArguments& a) {
         std::signal(SIGINT, onTradeoffInterrupt);
         std::signal(SIGTERM, onTradeoffInterrupt);
 
+        std::string machine = machineText();
         tradeoff::SweepResult result = tradeoff::runSweep(scenes, knobs, backends, options);
         if (result.cancelled) {
             std::cerr << "sdf-workbench tradeoff: cancelled; no report written\n";
             return 130;
         }
 
-        tradeoff::ReportContext context{commandText(a), {}};
+        tradeoff::ReportContext context{commandText(a), machine, {}};
         fs::path reportFolder = fs::absolute(a.report).parent_path();
         for (const tradeoff::SceneResult& scene : result.scenes) {
             if (scene.results.empty()) continue;

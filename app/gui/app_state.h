@@ -15,6 +15,7 @@
 #include "app/gui/snapshot_export.h"
 #include "app/gui/thumbnails.h"
 #include "app/gui/viewport.h"
+#include "tradeoff/measurements.h"
 #include "ui/polynomial_panel.h"
 #include "ui/primitive_library.h"
 #include "ui/editor.h"
@@ -67,6 +68,7 @@ struct AppState {
     ui::UiState ui;
     ui::PolynomialPanelState polynomial;  // View > Polynomial
     ui::PrimitiveLibrary library;         // the Library tab's files, listed once
+    tradeoff::MeasurementLookup measurements{tradeoff::defaultCacheDirectory()};  // Render tab's error estimate
     std::unique_ptr<Viewport> viewport;
     std::unique_ptr<Thumbnails> thumbnails;
     SnapshotExport snapshot;

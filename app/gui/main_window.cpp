@@ -13,6 +13,7 @@
 #include "app/gui/viewport_panel.h"
 #include "ui/long_text.h"
 #include "ui/panels.h"
+#include "ui/quality_panel.h"
 #include "ui/user_paths.h"
 #include "ui/view_camera.h"
 
@@ -210,6 +211,9 @@ void inspectorPanel(AppState& app, ImVec2 origin, float height) {
                 ImGui::EndTabItem();
             }
             if (tab("Render", Tab::Render)) {
+                ui::drawQualityPresets(app.editor, app.ui,
+                                       app.measurements.forScene(app.editor.scene(), app.editor.revision()));
+                ImGui::Separator();
                 ui::drawRenderSettingsPanel(app.editor, app.ui);
                 ImGui::EndTabItem();
             }

@@ -241,7 +241,9 @@ std::string writeReport(const SweepResult& result, const ReportContext& context)
     std::ostringstream out;
     out << "# Speed against error\n\n";
     if (!context.command.empty()) out << "Made by `" << context.command << "`";
-    out << " in " << format("%.0f", result.seconds) << " s.\n\n"
+    out << " in " << format("%.0f", result.seconds) << " s";
+    if (!context.machine.empty()) out << ", " << context.machine;
+    out << ".\n\n"
         << "Time is the median of the repetitions of each render (backends interleaved, shader builds excluded). "
            "Errors are against the reference (double-precision CPU, tight settings), on the 8-bit display encoding "
            "as `compare` prints them; hit mismatch is the share of sub-samples that hit in one image only, depth "

@@ -12,6 +12,7 @@ namespace sdfwb::tradeoff {
 
 struct ReportContext {
     std::string command;                      // how the report was made, quoted at its top
+    std::string machine;                      // what it ran on (threads, load, niceness), said after it
     std::map<std::string, std::string> plots; // scene name -> plot path relative to the report
 };
 

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "program/compile_scene.h"
+#include "tradeoff/measurements.h"
 
 namespace sdfwb::tradeoff {
 namespace {
@@ -98,6 +99,20 @@ std::optional<Setting> tuned(const SceneResult& sr, const SweepOptions& options)
     std::vector<TuningCandidate> candidates;
     for (const SettingResult& r : sr.results) candidates.push_back({&r.setting, seconds(r), error(r)});
     return tunedSetting(sr.scene, candidates, seconds(sr.results[0]), error(sr.results[0]), options.tuningSlack);
+}
+
+// What the workbench reads back (measurements.h).
+SceneMeasurements measurementsOf(const SceneResult& sr, const std::vector<std::string>& backends) {
+    SceneMeasurements m{backends, {}};
+    for (const SettingResult& r : sr.results) {
+        MeasuredPoint p{r.setting.scene.render, {}, 0};
+        for (const Measurement& b : r.byBackend) {
+            p.seconds.push_back(b.seconds);
+            p.meanError = std::max(p.meanError, b.error.display.meanAbs);
+        }
+        m.points.push_back(std::move(p));
+    }
+    return m;
 }
 
 // Most AA any planned setting uses: the reference resolves at least that finely.
@@ -218,6 +233,9 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
             }
             sr.results.push_back(std::move(measured->first));
             sweep.advance(sr.name + ": " + setting->label, true);
+        }
+        if (!result.cancelled && !sr.results.empty()) {
+            storeMeasurements(options.cacheDir, measurementKey(scenes[i].scene), measurementsOf(sr, result.backends));
         }
         ++sweep.progress_.scenesDone;
     }

@@ -1,6 +1,7 @@
 // Runs the sdf-workbench executable: snapshots, error messages and exit codes,
 // no partial files, compare's verdicts.
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -232,14 +233,27 @@ TEST_F(Cli, TradeoffReportsFrontsAndPlotsAndRendersTheReferenceOnce) {
     auto png = OIIO::ImageInput::open((plots / "tiny.png").string());
     ASSERT_TRUE(png);
     EXPECT_GT(png->spec().width, 100);
-    EXPECT_EQ(std::distance(fs::directory_iterator(cache), {}), 1);
+    // one reference, and the measurements the workbench's estimate reads
+    auto cached = [&] {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(cache)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    };
+    std::vector<std::string> files = cached();
+    ASSERT_EQ(files.size(), 2u);
+    auto ends = [](const std::string& name, const std::string& tail) {
+        return name.size() > tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    EXPECT_EQ(std::count_if(files.begin(), files.end(), [&](auto& f) { return ends(f, ".measured.json"); }), 1);
+    EXPECT_EQ(std::count_if(files.begin(), files.end(), [&](auto& f) { return ends(f, ".ref"); }), 1);
 
     ProcessResult second = run(arguments);
     ASSERT_EQ(second.exitCode, 0) << second.output;
     std::ifstream again(report);
     std::string secondText((std::istreambuf_iterator<char>(again)), {});
     EXPECT_NE(secondText.find("(cached)"), std::string::npos);
-    EXPECT_EQ(std::distance(fs::directory_iterator(cache), {}), 1);
+    EXPECT_EQ(cached(), files);
 }
 
 TEST_F(Cli, TradeoffOutOfBudgetSaysWhatItSkipped) {

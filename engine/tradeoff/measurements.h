@@ -1,0 +1,63 @@
+#pragma once
+// What a sweep measured for a scene, kept next to its cached references so the
+// workbench can say how far the current settings are from the reference and
+// what they cost, without measuring again.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace sdfwb::tradeoff {
+
+struct MeasuredPoint {
+    scene::RenderSettings render;  // at the measured size
+    std::vector<double> seconds;   // median per backend
+    double meanError = 0;          // levels of 255, the largest over backends
+};
+
+struct SceneMeasurements {
+    std::vector<std::string> backends;
+    std::vector<MeasuredPoint> points;  // [0] is the scene's default setting when measured
+};
+
+// $XDG_CACHE_HOME/sdf-workbench/references (default ~/.cache/...): the tradeoff
+// command's references and measurements.
+std::filesystem::path defaultCacheDirectory();
+
+// Hex key of a scene's content without its render settings, name and
+// description: edits of quality settings keep finding the measurements.
+std::string measurementKey(const scene::Scene& scene);
+
+// Writes atomically; throws std::runtime_error naming the path.
+void storeMeasurements(const std::filesystem::path& cacheDir, const std::string& key, const SceneMeasurements& m);
+// Nothing when absent or unreadable.
+std::optional<SceneMeasurements> loadMeasurements(const std::filesystem::path& cacheDir, const std::string& key);
+
+struct ErrorEstimate {
+    double meanError = 0;          // levels of 255
+    double speedupOverDefault = 0; // the default's time over this setting's, first backend
+};
+
+// The measured point whose settings equal `render` (size aside); nothing when
+// these settings were not measured.
+std::optional<ErrorEstimate> estimateError(const SceneMeasurements& measured, const scene::RenderSettings& render);
+
+// The measurements of the scene an editor shows, loaded when its content
+// changes (checked by revision, so a frame costs nothing when nothing changed).
+class MeasurementLookup {
+public:
+    explicit MeasurementLookup(std::filesystem::path cacheDir) : cacheDir_(std::move(cacheDir)) {}
+    const SceneMeasurements* forScene(const scene::Scene& scene, std::uint64_t revision);
+
+private:
+    std::filesystem::path cacheDir_;
+    std::optional<std::uint64_t> revision_;
+    std::string key_;
+    std::optional<SceneMeasurements> measured_;
+};
+
+}  // namespace sdfwb::tradeoff
