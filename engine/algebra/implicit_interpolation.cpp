@@ -354,13 +354,13 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
   auto search_degree = [&]() -> Exponent {
     for (int attempt = 0; attempt < 2; ++attempt) {
       const mp_limb_t p0 = next_prime();
+      ++stats.primes;
       for (std::uint64_t d = 1; d <= bound; ++d) {
         const std::size_t columns = monomial_count(variables, d);
         if (columns > kMaxInterpolationMonomials) return 0;
         monitor.check(progress, matrix_bytes(columns));
         const Exponent e = static_cast<Exponent>(d);
         first = nullspace_mod(h, monomials_of_degree(variables, e), e, p0);
-        ++stats.primes;
         if (first.nullity == 1) return e;
         if (first.nullity > 1) break;
       }

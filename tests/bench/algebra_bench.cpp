@@ -96,6 +96,7 @@ void register_implicitization(const testing::NamedParametrization& example, Deno
         continue;
       }
       state.SetLabel(result.method);
+      state.counters["primes"] = static_cast<double>(result.stats.primes);
       state.counters["generators"] = static_cast<double>(result.generators.size());
       if (!result.generators.empty()) {
         state.counters["degree"] = static_cast<double>(result.generators.front().total_degree());
