@@ -10,6 +10,7 @@
 
 #include <sys/resource.h>
 
+#include "app/backend.h"
 #include "app/progress_bar.h"
 #include "app/scene_source.h"
 #include "app/size_argument.h"
@@ -121,10 +122,10 @@ int runTradeoff(const TradeoffArguments& a) {
         std::vector<tradeoff::SceneInput> scenes;
         for (const fs::path& file : files) scenes.push_back({file.generic_string(), scene::loadSceneFile(file)});
 
-        std::vector<std::unique_ptr<tradeoff::TimedBackend>> owned;
-        if (a.backend != "gl") owned.push_back(tradeoff::makeCpuBackend());
-        if (a.backend != "cpu") owned.push_back(tradeoff::makeGlBackend());
-        std::vector<tradeoff::TimedBackend*> backends;
+        std::vector<std::unique_ptr<render::Backend>> owned;
+        if (a.backend != "gl") owned.push_back(makeBackend(Backend::Cpu));
+        if (a.backend != "cpu") owned.push_back(makeBackend(Backend::Gl));
+        std::vector<render::Backend*> backends;
         for (auto& b : owned) backends.push_back(b.get());
 
         tradeoff::SweepOptions options;

@@ -19,9 +19,25 @@ double median(std::vector<double> values) {
 
 bool sameImage(const image::Frame& a, const image::Frame& b) { return a.color.rgb == b.color.rgb && a.steps == b.steps; }
 
+struct TimedFrame {
+    image::Frame frame;
+    double seconds = 0;
+};
+
+// The render alone, without what prepare() built; nothing when cancelled.
+std::optional<TimedFrame> timedRender(render::Backend& backend, const program::Program& program,
+                                      const std::atomic<bool>* cancel) {
+    render::RenderControl control;
+    control.cancel = cancel;
+    auto start = Clock::now();
+    render::RenderOutcome outcome = backend.render(program, control);
+    if (outcome.cancelled) return std::nullopt;
+    return TimedFrame{std::move(outcome.frame), std::chrono::duration<double>(Clock::now() - start).count()};
+}
+
 class Sweep {
 public:
-    Sweep(const std::vector<TimedBackend*>& backends, const SweepOptions& options)
+    Sweep(const std::vector<render::Backend*>& backends, const SweepOptions& options)
         : backends_(backends), options_(options), start_(Clock::now()) {}
 
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
@@ -55,7 +71,7 @@ public:
         image::Frame first;
         for (int rep = 0; rep < std::max(1, options_.repetitions); ++rep) {
             for (size_t b = 0; b < backends_.size(); ++b) {
-                std::optional<TimedFrame> timed = backends_[b]->render(program, options_.cancel);
+                std::optional<TimedFrame> timed = timedRender(*backends_[b], program, options_.cancel);
                 if (!timed) return std::nullopt;
                 Measurement& m = result.byBackend[b];
                 m.repetitionSeconds.push_back(timed->seconds);
@@ -71,7 +87,7 @@ public:
         return std::make_pair(std::move(result), std::move(first));
     }
 
-    const std::vector<TimedBackend*>& backends_;
+    const std::vector<render::Backend*>& backends_;
     const SweepOptions& options_;
     Clock::time_point start_;
     int measuredUnits_ = 0;
@@ -125,10 +141,10 @@ int largestAa(const SweepPlan& plan) {
 }  // namespace
 
 SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<KnobRequest>& knobs,
-                     const std::vector<TimedBackend*>& backends, const SweepOptions& options) {
+                     const std::vector<render::Backend*>& backends, const SweepOptions& options) {
     Sweep sweep(backends, options);
     SweepResult result;
-    for (TimedBackend* backend : backends) result.backends.push_back(backend->name());
+    for (render::Backend* backend : backends) result.backends.push_back(backend->name());
 
     std::vector<SweepPlan> plans;
     for (const SceneInput& input : scenes) {
@@ -174,7 +190,7 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
 
         // the shader build is not part of any timed render
         program::Program structure = program::compileScene(sr.scene);
-        for (TimedBackend* backend : backends) backend->prepare(structure);
+        for (render::Backend* backend : backends) backend->prepare(structure);
 
         image::Frame defaultFrame;
         const Knob* inertKnob = nullptr;  // the knob whose cheapest value changed nothing

@@ -15,7 +15,7 @@
 #include "tradeoff/frame_error.h"
 #include "tradeoff/reference.h"
 #include "tradeoff/sweep_plan.h"
-#include "tradeoff/timed_backends.h"
+#include "render/render_backend.h"
 
 namespace sdfwb::tradeoff {
 
@@ -81,8 +81,9 @@ struct SweepResult {
     double seconds = 0;
 };
 
-// Throws what the backends and the reference cache throw.
+// Each backend's prepare() (shader build and warm-up) runs before its timed
+// renders. Throws what the backends and the reference cache throw.
 SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<KnobRequest>& knobs,
-                     const std::vector<TimedBackend*>& backends, const SweepOptions& options);
+                     const std::vector<render::Backend*>& backends, const SweepOptions& options);
 
 }  // namespace sdfwb::tradeoff
