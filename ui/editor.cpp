@@ -96,7 +96,7 @@ Problems Editor::rename(const NodePath& path, std::string name) {
     return commit("Rename", std::move(candidate), selection_, {});
 }
 
-Problems Editor::insert(const NodePath& parent, int index, Node node) {
+Problems Editor::insert(const NodePath& parent, int index, Node node, std::string_view label) {
     const Node* target = findNode(scene_.root, parent);
     if (!target) {
         return noNode(parent);
@@ -109,13 +109,13 @@ Problems Editor::insert(const NodePath& parent, int index, Node node) {
     if (index < 0 || index > count) {
         index = count;
     }
-    std::string label = "Add " + std::string(scene::kindSpec(node.kind).name);
+    std::string name = label.empty() ? "Add " + std::string(scene::kindSpec(node.kind).name) : std::string(label);
     scene::Scene candidate = scene_;
     auto& children = findNode(candidate.root, parent)->children;
     children.insert(children.begin() + index, std::move(node));
     NodePath added = parent;
     added.push_back(index);
-    return commit(label, std::move(candidate), added, {});
+    return commit(name, std::move(candidate), added, {});
 }
 
 Problems Editor::add(NodeKind kind, const std::optional<NodePath>& under) {
@@ -126,19 +126,27 @@ Problems Editor::add(NodeKind kind, const std::optional<NodePath>& under) {
     return add(Node::make(kind), under);
 }
 
-Problems Editor::add(Node node, const std::optional<NodePath>& under) {
+std::optional<std::pair<NodePath, int>> Editor::insertionPoint(const std::optional<NodePath>& under) const {
     NodePath target = under.value_or(selection_.value_or(NodePath{}));
     const Node* existing = findNode(scene_.root, target);
     if (!existing) {
-        return noNode(target);
+        return std::nullopt;
     }
     if (takesAnotherChild(*existing)) {
-        return insert(target, -1, std::move(node));
+        return std::pair{target, -1};
     }
     if (!target.empty() && takesAnotherChild(*findNode(scene_.root, parentOf(target)))) {
-        return insert(parentOf(target), target.back() + 1, std::move(node));
+        return std::pair{parentOf(target), target.back() + 1};
     }
-    return insert({}, -1, std::move(node));
+    return std::pair{NodePath{}, -1};
+}
+
+Problems Editor::add(Node node, const std::optional<NodePath>& under) {
+    std::optional<std::pair<NodePath, int>> where = insertionPoint(under);
+    if (!where) {
+        return noNode(under.value_or(selection_.value_or(NodePath{})));
+    }
+    return insert(where->first, where->second, std::move(node));
 }
 
 Problems Editor::wrap(const NodePath& path, NodeKind kind) {

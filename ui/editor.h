@@ -60,8 +60,11 @@ public:
     Problems setField(const NodePath& path, std::string_view field, scene::FieldValue value,
                       std::string_view mergeKey = {});
     Problems rename(const NodePath& path, std::string name);
-    // Inserts `node` as child `index` of `parent` (-1: last) and selects it.
-    Problems insert(const NodePath& parent, int index, scene::Node node);
+    // Inserts `node` as child `index` of `parent` (-1: last) and selects it;
+    // the undo step is `label`, or "Add <kind>" when empty.
+    Problems insert(const NodePath& parent, int index, scene::Node node, std::string_view label = {});
+    // The parent and index add() would insert at (nullopt: `under` leads nowhere).
+    std::optional<std::pair<NodePath, int>> insertionPoint(const std::optional<NodePath>& under) const;
     // Where `add <kind>` puts a node: into `under` (default: the selection)
     // if it takes one more child, otherwise next to it in its parent; the root
     // when nothing fits. An operator that needs a child wraps `under` instead.

@@ -5,6 +5,7 @@
 
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
+#include "ui/placement.h"
 
 namespace sdfwb::ui {
 
@@ -50,7 +51,7 @@ Problems addFormulaNode(Editor& editor, const scene::KindSpec& kind, const std::
     if (std::string reason = scene::checkField(*field, formula); !reason.empty()) return {reason};
     scene::Node node = scene::Node::make(kind.kind);
     node.set(field->name, formula);
-    return editor.add(std::move(node), std::nullopt);
+    return addPlaced(editor, std::move(node));
 }
 
 void drawAddFormulaMenu(Editor& editor, UiState& ui, const scene::KindSpec& kind) {

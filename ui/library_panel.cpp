@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include "ui/panels.h"
+#include "ui/placement.h"
 #include "ui/primitive_library.h"
 
 namespace sdfwb::ui {
@@ -48,7 +49,7 @@ void drawLibraryPanel(Editor& editor, UiState& ui, PrimitiveLibrary& library) {
                 const scene::Node* at = target ? findNode(editor.scene().root, *target) : nullptr;
                 bool into = at && scene::kindSpec(at->kind).maxChildren < 0;
                 NodePath parent = into || !target || target->empty() ? target.value_or(NodePath{}) : parentOf(*target);
-                reportProblems(ui, editor.insert(parent, -1, std::move(node)));
+                reportProblems(ui, insertPlaced(editor, parent, -1, std::move(node)));
             } catch (const std::exception& error) {
                 ui.error(error.what());
             }

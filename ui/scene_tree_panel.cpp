@@ -8,6 +8,7 @@
 
 #include "ui/formula_field.h"
 #include "ui/panels.h"
+#include "ui/placement.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -75,7 +76,7 @@ void contextMenu(TreeContext& tree, const NodePath& path) {
         ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, !path.empty())) {
-        tree.pending = [&tree, path] { reportProblems(tree.ui, tree.editor.duplicate(path)); };
+        tree.pending = [&tree, path] { reportProblems(tree.ui, duplicatePlaced(tree.editor, path)); };
     }
     if (ImGui::MenuItem("Delete", "Del", false, !path.empty())) {
         tree.pending = [&tree, path] { reportProblems(tree.ui, tree.editor.remove(path)); };
@@ -155,7 +156,7 @@ void drawAddMenuItems(Editor& editor, UiState& ui) {
             if (formulaField(spec)) {
                 drawAddFormulaMenu(editor, ui, spec);
             } else if (ImGui::MenuItem(std::string(spec.name).c_str())) {
-                reportProblems(ui, editor.add(spec.kind, std::nullopt));
+                reportProblems(ui, addPlaced(editor, spec.kind));
             }
         }
         if (primitives) ImGui::Separator();

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "scene/node_kinds.h"
+#include "ui/placement.h"
 #include "ui/view_camera.h"
 
 namespace sdfwb::ui {
@@ -23,6 +24,7 @@ constexpr CommandSpec kCommands[] = {
     {"set", 2, 2, "set <field or JSON path> <value>"},
     {"add", 1, 3, "add <kind> [under <node path>]"},
     {"wrap", 1, 1, "wrap <kind>"},
+    {"place", 1, 1, "place <kind>"},
     {"duplicate", 0, 0, "duplicate"},
     {"delete", 0, 0, "delete"},
     {"rename", 1, 1, "rename <name>"},
@@ -209,9 +211,10 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         if (!selected) return fail(c, "no node selected (use select <node path>, or a JSON path such as render.aa)");
         return done(editor.setJsonValue(formatNodePath(*selected) + "." + a[0], parseValue(a[1])));
     }
-    if (c.name == "add" || c.name == "wrap") {
+    if (c.name == "add" || c.name == "wrap" || c.name == "place") {
         const scene::KindSpec* kind = kindArg(a[0]);
         if (!kind) return fail(c, "unknown node kind \"" + a[0] + "\" (known: " + knownKinds() + ")");
+        if (c.name == "place") return done(addPlaced(editor, kind->kind));
         if (c.name == "wrap") {
             const NodePath* selected = needSelection();
             if (!selected) return fail(c, "no node selected");
@@ -229,7 +232,7 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         const NodePath* selected = needSelection();
         if (!selected) return fail(c, "no node selected");
         NodePath path = *selected;
-        if (c.name == "duplicate") return done(editor.duplicate(path));
+        if (c.name == "duplicate") return done(duplicatePlaced(editor, path));
         if (c.name == "delete") return done(editor.remove(path));
         if (c.name == "rename") return done(editor.rename(path, a[0]));
         std::optional<NodePath> parent = parseNodePath(a[0]);

@@ -13,6 +13,7 @@
 #include "app/gui/viewport_panel.h"
 #include "ui/long_text.h"
 #include "ui/panels.h"
+#include "ui/placement.h"
 #include "ui/quality_panel.h"
 #include "ui/user_paths.h"
 #include "ui/view_camera.h"
@@ -33,7 +34,7 @@ void redo(AppState& app) {
     if (!app.editor.redo()) app.ui.info("nothing to redo");
 }
 void duplicateSelection(AppState& app) {
-    if (app.editor.selection()) ui::reportProblems(app.ui, app.editor.duplicate(*app.editor.selection()));
+    if (app.editor.selection()) ui::reportProblems(app.ui, ui::duplicatePlaced(app.editor, *app.editor.selection()));
 }
 void deleteSelection(AppState& app) {
     if (app.editor.selection()) ui::reportProblems(app.ui, app.editor.remove(*app.editor.selection()));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cpu/cpu_renderer.h"
 #include "expr/tape.h"
 #include "scene/camera_frame.h"
 #include "sdf/shared.h"
@@ -96,10 +97,11 @@ std::optional<std::vector<int>> pathOfShape(const scene::Scene& scene, const pro
     return paths[static_cast<size_t>(shape)];
 }
 
-glm::dvec3 fieldNormal(const program::Program& program, const glm::dvec3& march, double t) {
+// Central differences at a march point, steps scaled with its distance from the eye.
+glm::dvec3 gradientAt(const program::Program& program, const glm::dvec3& march) {
     f64::Kernel kernel(program);
     f64::Scratch scratch(program);
-    const double h = 1e-4 * (1.0 + t);
+    const double h = 1e-4 * (1.0 + std::sqrt(march.x * march.x + march.y * march.y + march.z * march.z));
     glm::dvec3 gradient(0.0);
     for (int axis = 0; axis < 3; ++axis) {
         glm::dvec3 step(0.0);
@@ -117,6 +119,14 @@ std::vector<std::vector<int>> primitivePaths(const scene::Node& root) {
     std::vector<int> path;
     collectPrimitives(root, path, paths);
     return paths;
+}
+
+double fieldDistance(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world) {
+    return evaluateDistance(program, world - scene::cameraFrame(scene.camera).eye, Precision::Float);
+}
+
+glm::dvec3 fieldNormal(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world) {
+    return gradientAt(program, world - scene::cameraFrame(scene.camera).eye);
 }
 
 std::optional<std::vector<int>> primitiveAt(const scene::Scene& scene, const program::Program& program,
@@ -142,7 +152,7 @@ PickResult pickPixel(const scene::Scene& scene, const program::Program& program,
     pick.t = traced.t;
     pick.position = glm::dvec3(march) + scene::cameraFrame(scene.camera).eye;
     pick.distance = kernel.map(scratch, march).d;
-    pick.normal = fieldNormal(program, glm::dvec3(march), traced.t);
+    pick.normal = gradientAt(program, glm::dvec3(march));
     int shape = decidingShape(program, kernel, march);
     pick.ground = shape == kGround;
     pick.node = pathOfShape(scene, program, shape);

@@ -46,6 +46,10 @@ PickResult pickPixel(const scene::Scene& scene, const program::Program& program,
 std::optional<std::vector<int>> primitiveAt(const scene::Scene& scene, const program::Program& program,
                                             const glm::dvec3& world);
 
+// The field (float, as rendered) and its unit gradient (double) at a world point.
+double fieldDistance(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world);
+glm::dvec3 fieldNormal(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world);
+
 // Paths of the scene's primitives in the compiler's order (depth first).
 std::vector<std::vector<int>> primitivePaths(const scene::Node& root);
 
