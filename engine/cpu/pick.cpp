@@ -122,7 +122,7 @@ std::vector<std::vector<int>> primitivePaths(const scene::Node& root) {
 }
 
 double fieldDistance(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world) {
-    return evaluateDistance(program, world - scene::cameraFrame(scene.camera).eye, Precision::Float);
+    return evaluateDistance(program, world - scene::cameraFrame(scene.camera).eye, render::Precision::Float);
 }
 
 glm::dvec3 fieldNormal(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world) {
