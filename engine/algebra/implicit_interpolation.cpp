@@ -142,7 +142,7 @@ struct PrimeImage {
   std::vector<mp_limb_t> vector;    // when nullity == 1
 };
 
-mp_limb_t reduce(const fmpz_t c, nmod_t mod) { return fmpz_fdiv_ui(c, mod.n); }
+mp_limb_t residue(const fmpz_t c, nmod_t mod) { return fmpz_fdiv_ui(c, mod.n); }
 
 mp_limb_t evaluate_mod(const IntegerPoly& f, const std::vector<std::vector<mp_limb_t>>& powers,
                        const std::vector<mp_limb_t>& coefficients, nmod_t mod) {
@@ -163,7 +163,7 @@ PrimeImage nullspace_mod(const Homogeneous& h, const std::vector<std::vector<Exp
   const slong rows = columns + 8;  // a few spare points against unlucky ones
   std::vector<std::vector<mp_limb_t>> coefficients(h.polys.size());
   for (std::size_t j = 0; j < h.polys.size(); ++j) {
-    for (const Fmpz& c : h.polys[j].coefficients) coefficients[j].push_back(reduce(c.v, mod));
+    for (const Fmpz& c : h.polys[j].coefficients) coefficients[j].push_back(residue(c.v, mod));
   }
   std::mt19937_64 random(prime);
   std::vector<std::vector<mp_limb_t>> parameter_powers(h.parameters);
