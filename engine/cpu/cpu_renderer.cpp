@@ -1,6 +1,8 @@
 #include "cpu/cpu_renderer.h"
 
 #include <mutex>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include <tbb/blocked_range.h>

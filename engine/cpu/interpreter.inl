@@ -25,61 +25,85 @@ struct Scratch {
     }
 };
 
-// The scene's distance field: runs the program's instructions on `point`.
+// Calls f(q[0], ..., q[Slots - 1]): an instruction's parameter slots as arguments.
+template <int Slots, typename F>
+inline auto withSlots(const vec4* q, F f) {
+    return [&]<size_t... I>(std::index_sequence<I...>) { return f(q[I]...); }(std::make_index_sequence<Slots>{});
+}
+
+// The register files and constants one instruction reads.
+struct Registers {
+    vec3* points;
+    Sample* samples;
+    const vec4* params;
+    Scratch& scratch;
+};
+
+// One function per operand class (program/opcodes.h), so each opcode's wiring
+// follows from its class in the opcode table, as the GLSL generator's does.
+template <int Slots, typename F>
+inline void runPoint(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    r.points[in.dst] = withSlots<Slots>(q, [&](auto... s) { return fn(r.points[in.a], s...); });
+}
+template <int Slots, typename F>
+inline void runShape(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    real d = withSlots<Slots>(q, [&](auto... s) { return fn(r.points[in.a], s...); });
+    r.samples[in.dst] = shapeSample(d, materialAtSlot(r.params, in.material));
+}
+template <int Slots, typename F>
+inline void runShapeSample(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    r.samples[in.dst] = withSlots<Slots>(
+        q, [&](auto... s) { return fn(r.points[in.a], s..., materialAtSlot(r.params, in.material)); });
+}
+template <int Slots, typename F>
+inline void runFormulaShape(F fn, const program::Instruction& in, const vec4*, Registers& r) {
+    static_assert(Slots == 0, "a formula shape reads only its formula");
+    r.samples[in.dst] = shapeSample(fn(r.scratch.formula(in.variant, r.points[in.a])[0]),
+                                    materialAtSlot(r.params, in.material));
+}
+template <int Slots, typename F>
+inline void runFormulaSample(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    std::span<const real> v = r.scratch.formula(in.variant, r.points[in.a]);
+    vec4 value(v[0], v[1], v[2], v[3]);
+    r.samples[in.dst] = withSlots<Slots>(
+        q, [&](auto... s) { return fn(r.points[in.a], value, s..., materialAtSlot(r.params, in.material)); });
+}
+template <int Slots, typename F>
+inline void runCombine(F fn, const program::Instruction& in, const vec4*, Registers& r) {
+    static_assert(Slots == 0, "a hard boolean has no parameters");
+    r.samples[in.dst] = fn(r.samples[in.a], r.samples[in.b]);
+}
+template <int Slots, typename F>
+inline void runSmoothCombine(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    r.samples[in.dst] =
+        withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.samples[in.b], s..., in.variant); });
+}
+template <int Slots, typename F>
+inline void runPost(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    r.samples[in.dst] = withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.points[in.b], s...); });
+}
+template <int Slots, typename F>
+inline void runConstant(F fn, const program::Instruction& in, const vec4*, Registers& r) {
+    r.samples[in.dst] = fn(materialAtSlot(r.params, 0));
+}
+
+// The scene's distance field: runs the program's instructions on `point`. The
+// switch is expanded from the opcode table, one case per opcode.
 inline Sample mapProgram(const program::Program& program, const vec4* params, Scratch& scratch, vec3 point) {
-    using program::Opcode;
-    vec3* points = scratch.points.data();
-    Sample* samples = scratch.samples.data();
-    points[0] = point;
+    Registers r{scratch.points.data(), scratch.samples.data(), params, scratch};
+    r.points[0] = point;
     for (const program::Instruction& in : program.code) {
         const vec4* q = in.param >= 0 ? params + in.param : nullptr;
-        vec3& p = points[in.a >= 0 ? in.a : 0];
         switch (in.op) {
-        case Opcode::Translate: points[in.dst] = instTranslate(p, q[0]); break;
-        case Opcode::Rotate: points[in.dst] = instRotate(p, q[0], q[1], q[2]); break;
-        case Opcode::Scale: points[in.dst] = instScale(p, q[0]); break;
-        case Opcode::Twist: points[in.dst] = instTwist(p, q[0]); break;
-        case Opcode::Bend: points[in.dst] = instBend(p, q[0]); break;
-        case Opcode::Elongate: points[in.dst] = instElongate(p, q[0]); break;
-        case Opcode::Mirror: points[in.dst] = instMirror(p, q[0]); break;
-        case Opcode::Repeat: points[in.dst] = instRepeat(p, q[0], q[1]); break;
-        case Opcode::RepeatInfinite: points[in.dst] = instRepeatInfinite(p, q[0]); break;
-        case Opcode::Sphere: samples[in.dst] = shapeSample(instSphere(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Box: samples[in.dst] = shapeSample(instBox(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::RoundBox: samples[in.dst] = shapeSample(instRoundBox(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Plane: samples[in.dst] = shapeSample(instPlane(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Torus: samples[in.dst] = shapeSample(instTorus(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Cone: samples[in.dst] = shapeSample(instCone(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Ellipsoid: samples[in.dst] = shapeSample(instEllipsoid(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Cylinder: samples[in.dst] = shapeSample(instCylinder(p, q[0]), materialAtSlot(params, in.material)); break;
-        case Opcode::Capsule: samples[in.dst] = shapeSample(instCapsule(p, q[0], q[1]), materialAtSlot(params, in.material)); break;
-        case Opcode::Ground: samples[in.dst] = instGround(p, q[0], q[1], q[2], materialAtSlot(params, in.material)); break;
-        case Opcode::SdfFormula:
-            samples[in.dst] = shapeSample(instSdfFormula(scratch.formula(in.variant, p)[0]), materialAtSlot(params, in.material));
-            break;
-        case Opcode::ImplicitFormula: {
-            std::span<const real> v = scratch.formula(in.variant, p);
-            samples[in.dst] = instImplicit(p, vec4(v[0], v[1], v[2], v[3]), q[0], q[1], materialAtSlot(params, in.material));
-            break;
-        }
-        case Opcode::Union: samples[in.dst] = instUnion(samples[in.a], samples[in.b]); break;
-        case Opcode::Intersection: samples[in.dst] = instIntersection(samples[in.a], samples[in.b]); break;
-        case Opcode::Difference: samples[in.dst] = instDifference(samples[in.a], samples[in.b]); break;
-        case Opcode::SmoothUnion: samples[in.dst] = instSmoothUnion(samples[in.a], samples[in.b], q[0], in.variant); break;
-        case Opcode::SmoothIntersection:
-            samples[in.dst] = instSmoothIntersection(samples[in.a], samples[in.b], q[0], in.variant);
-            break;
-        case Opcode::SmoothDifference:
-            samples[in.dst] = instSmoothDifference(samples[in.a], samples[in.b], q[0], in.variant);
-            break;
-        case Opcode::ScaleDistance: samples[in.dst] = instScaleDistance(samples[in.a], points[in.b], q[0]); break;
-        case Opcode::RoundDistance: samples[in.dst] = instRoundDistance(samples[in.a], points[in.b], q[0]); break;
-        case Opcode::Displace: samples[in.dst] = instDisplace(samples[in.a], points[in.b], q[0]); break;
-        case Opcode::StepScale: samples[in.dst] = instStepScale(samples[in.a], points[in.b], q[0]); break;
-        case Opcode::Empty: samples[in.dst] = instEmpty(materialAtSlot(params, 0)); break;
+#define SDFWB_OPCODE_CASE(op, name, cls, slots, fn)                                   \
+    case program::Opcode::op:                                                         \
+        run##cls<slots>([](auto... args) { return fn(args...); }, in, q, r);          \
+        break;
+            SDFWB_OPCODES(SDFWB_OPCODE_CASE)
+#undef SDFWB_OPCODE_CASE
         }
     }
-    return samples[program.result];
+    return r.samples[program.result];
 }
 
 struct SampleResult {

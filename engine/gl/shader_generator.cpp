@@ -98,46 +98,38 @@ std::string sample(int r) { return "s" + std::to_string(r); }
 
 std::string formulaName(int index) { return "formula" + std::to_string(index); }
 
+// One case per operand class (program/opcodes.h), as the CPU interpreter has.
 void emitInstruction(std::ostringstream& out, const Instruction& in) {
     const program::OpcodeInfo& info = opcodeInfo(in.op);
     std::string fn(info.function);
-    if (in.op == program::Opcode::SdfFormula) {
-        out << "    " << sample(in.dst) << " = shapeSample(" << fn << "(" << formulaName(in.variant) << "(" << point(in.a)
-            << ")), M(" << in.material << "));\n";
-        return;
-    }
-    if (in.op == program::Opcode::ImplicitFormula) {
-        out << "    " << sample(in.dst) << " = " << fn << "(" << point(in.a) << ", " << formulaName(in.variant) << "("
-            << point(in.a) << ")" << slots(in) << ", M(" << in.material << "));\n";
-        return;
-    }
+    std::string material = "M(" + std::to_string(in.material) + ")";
+    out << "    ";
     switch (info.opClass) {
-    case OpClass::Point:
-        out << "    " << point(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ");\n";
-        break;
+    case OpClass::Point: out << point(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ");\n"; break;
     case OpClass::Shape:
-        if (in.op == program::Opcode::Ground) {
-            out << "    " << sample(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ", M("
-                << in.material << "));\n";
-        } else {
-            out << "    " << sample(in.dst) << " = shapeSample(" << fn << "(" << point(in.a) << slots(in) << "), M("
-                << in.material << "));\n";
-        }
-        break;
-    case OpClass::Combine:
-        out << "    " << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << sample(in.b) << slots(in);
-        if (info.paramSlots > 0) {
-            out << ", " << in.variant;
-        }
-        out << ");\n";
-        break;
-    case OpClass::Post:
-        out << "    " << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << slots(in)
+        out << sample(in.dst) << " = shapeSample(" << fn << "(" << point(in.a) << slots(in) << "), " << material
             << ");\n";
         break;
-    case OpClass::Constant:
-        out << "    " << sample(in.dst) << " = " << fn << "(M(0));\n";
+    case OpClass::ShapeSample:
+        out << sample(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ", " << material << ");\n";
         break;
+    case OpClass::FormulaShape:
+        out << sample(in.dst) << " = shapeSample(" << fn << "(" << formulaName(in.variant) << "(" << point(in.a)
+            << ")), " << material << ");\n";
+        break;
+    case OpClass::FormulaSample:
+        out << sample(in.dst) << " = " << fn << "(" << point(in.a) << ", " << formulaName(in.variant) << "("
+            << point(in.a) << ")" << slots(in) << ", " << material << ");\n";
+        break;
+    case OpClass::Combine: out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << sample(in.b) << ");\n"; break;
+    case OpClass::SmoothCombine:
+        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << sample(in.b) << slots(in) << ", "
+            << in.variant << ");\n";
+        break;
+    case OpClass::Post:
+        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << slots(in) << ");\n";
+        break;
+    case OpClass::Constant: out << sample(in.dst) << " = " << fn << "(M(0));\n"; break;
     }
 }
 

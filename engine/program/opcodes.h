@@ -1,30 +1,76 @@
 #pragma once
 // The compiled scene's instruction set. Each opcode names the shared-library
-// function both backends call for it (the GLSL generator emits that call, the CPU
-// evaluator makes it), so the table below is the single list of operations.
+// function both backends call for it (sdf/glsl/instructions.glsl). The list
+// below is the only place an opcode is typed: the enum, the info table, the
+// GLSL generator's calls and the CPU interpreter's dispatch are all expanded
+// from it, so a new opcode cannot reach one backend and miss the other.
 
 #include <array>
 #include <string_view>
 
 namespace sdfwb::program {
 
+// How an instruction's operands and result are wired; the generator and the
+// interpreter each have one case per class, never one per opcode.
 enum class OpClass {
-    Point,    // P[dst] = f(P[a], params)
-    Shape,    // S[dst] = Sample(f(P[a], params), material); Ground returns the Sample itself
-    Combine,  // S[dst] = f(S[a], S[b], params)
-    Post,     // S[dst] = f(S[a], P[b], params)
-    Constant, // S[dst] = nothing here: distance "far", default material
+    Point,          // P[dst] = f(P[a], slots)
+    Shape,          // S[dst] = shapeSample(f(P[a], slots), material)
+    ShapeSample,    // S[dst] = f(P[a], slots, material)
+    FormulaShape,   // S[dst] = shapeSample(f(formula value at P[a]), material)
+    FormulaSample,  // S[dst] = f(P[a], formula value and gradient at P[a], slots, material)
+    Combine,        // S[dst] = f(S[a], S[b])
+    SmoothCombine,  // S[dst] = f(S[a], S[b], slots, variant)
+    Post,           // S[dst] = f(S[a], P[b], slots)
+    Constant,       // S[dst] = f(default material): "nothing here"
 };
 
+// X(Enum, name, class, parameter slots, shared function). Parameter layouts are
+// documented beside each function in instructions.glsl. Formula opcodes take
+// Program::formulas[Instruction::variant].
+#define SDFWB_OPCODES(X)                                                             \
+    X(Translate, "translate", Point, 1, instTranslate)                               \
+    X(Rotate, "rotate", Point, 3, instRotate)                                        \
+    X(Scale, "scale", Point, 1, instScale)                                           \
+    X(Twist, "twist", Point, 1, instTwist)                                           \
+    X(Bend, "bend", Point, 1, instBend)                                              \
+    X(Elongate, "elongate", Point, 1, instElongate)                                  \
+    X(Mirror, "mirror", Point, 1, instMirror)                                        \
+    X(Repeat, "repeat", Point, 2, instRepeat)                                        \
+    X(RepeatInfinite, "repeat_infinite", Point, 1, instRepeatInfinite)               \
+    X(Sphere, "sphere", Shape, 1, instSphere)                                        \
+    X(Box, "box", Shape, 1, instBox)                                                 \
+    X(RoundBox, "round_box", Shape, 1, instRoundBox)                                 \
+    X(Plane, "plane", Shape, 1, instPlane)                                           \
+    X(Torus, "torus", Shape, 1, instTorus)                                           \
+    X(Cone, "cone", Shape, 1, instCone)                                              \
+    X(Ellipsoid, "ellipsoid", Shape, 1, instEllipsoid)                               \
+    X(Cylinder, "cylinder", Shape, 1, instCylinder)                                  \
+    X(Capsule, "capsule", Shape, 2, instCapsule)                                     \
+    X(Ground, "ground", ShapeSample, 3, instGround)                                  \
+    X(SdfFormula, "sdf_formula", FormulaShape, 0, instSdfFormula)                    \
+    X(ImplicitFormula, "implicit_formula", FormulaSample, 2, instImplicit)           \
+    X(Union, "union", Combine, 0, instUnion)                                         \
+    X(Intersection, "intersection", Combine, 0, instIntersection)                    \
+    X(Difference, "difference", Combine, 0, instDifference)                          \
+    X(SmoothUnion, "smooth_union", SmoothCombine, 1, instSmoothUnion)                \
+    X(SmoothIntersection, "smooth_intersection", SmoothCombine, 1, instSmoothIntersection) \
+    X(SmoothDifference, "smooth_difference", SmoothCombine, 1, instSmoothDifference) \
+    X(ScaleDistance, "scale_distance", Post, 1, instScaleDistance)                   \
+    X(RoundDistance, "round_distance", Post, 1, instRoundDistance)                   \
+    X(Displace, "displace", Post, 1, instDisplace)                                   \
+    X(StepScale, "step_scale", Post, 1, instStepScale)                               \
+    X(Empty, "empty", Constant, 0, instEmpty)
+
 enum class Opcode {
-    Translate, Rotate, Scale, Twist, Bend, Elongate, Mirror, Repeat, RepeatInfinite,
-    Sphere, Box, RoundBox, Plane, Torus, Cone, Ellipsoid, Cylinder, Capsule, Ground,
-    SdfFormula, ImplicitFormula,
-    Union, Intersection, Difference, SmoothUnion, SmoothIntersection, SmoothDifference,
-    ScaleDistance, RoundDistance, Displace, StepScale,
-    Empty,
+#define SDFWB_OPCODE_ENUM(op, name, cls, slots, fn) op,
+    SDFWB_OPCODES(SDFWB_OPCODE_ENUM)
+#undef SDFWB_OPCODE_ENUM
 };
-inline constexpr int kOpcodeCount = static_cast<int>(Opcode::Empty) + 1;
+inline constexpr int kOpcodeCount = 0
+#define SDFWB_OPCODE_COUNT(op, name, cls, slots, fn) +1
+    SDFWB_OPCODES(SDFWB_OPCODE_COUNT)
+#undef SDFWB_OPCODE_COUNT
+    ;
 
 struct OpcodeInfo {
     Opcode op;
@@ -35,50 +81,11 @@ struct OpcodeInfo {
 };
 
 inline constexpr std::array<OpcodeInfo, kOpcodeCount> kOpcodes = {{
-    {Opcode::Translate, "translate", OpClass::Point, 1, "instTranslate"},
-    {Opcode::Rotate, "rotate", OpClass::Point, 3, "instRotate"},
-    {Opcode::Scale, "scale", OpClass::Point, 1, "instScale"},
-    {Opcode::Twist, "twist", OpClass::Point, 1, "instTwist"},
-    {Opcode::Bend, "bend", OpClass::Point, 1, "instBend"},
-    {Opcode::Elongate, "elongate", OpClass::Point, 1, "instElongate"},
-    {Opcode::Mirror, "mirror", OpClass::Point, 1, "instMirror"},
-    {Opcode::Repeat, "repeat", OpClass::Point, 2, "instRepeat"},
-    {Opcode::RepeatInfinite, "repeat_infinite", OpClass::Point, 1, "instRepeatInfinite"},
-    {Opcode::Sphere, "sphere", OpClass::Shape, 1, "instSphere"},
-    {Opcode::Box, "box", OpClass::Shape, 1, "instBox"},
-    {Opcode::RoundBox, "round_box", OpClass::Shape, 1, "instRoundBox"},
-    {Opcode::Plane, "plane", OpClass::Shape, 1, "instPlane"},
-    {Opcode::Torus, "torus", OpClass::Shape, 1, "instTorus"},
-    {Opcode::Cone, "cone", OpClass::Shape, 1, "instCone"},
-    {Opcode::Ellipsoid, "ellipsoid", OpClass::Shape, 1, "instEllipsoid"},
-    {Opcode::Cylinder, "cylinder", OpClass::Shape, 1, "instCylinder"},
-    {Opcode::Capsule, "capsule", OpClass::Shape, 2, "instCapsule"},
-    {Opcode::Ground, "ground", OpClass::Shape, 3, "instGround"},
-    // Formula shapes: Instruction::variant indexes Program::formulas
-    {Opcode::SdfFormula, "sdf_formula", OpClass::Shape, 0, "instSdfFormula"},
-    {Opcode::ImplicitFormula, "implicit_formula", OpClass::Shape, 2, "instImplicit"},
-    {Opcode::Union, "union", OpClass::Combine, 0, "instUnion"},
-    {Opcode::Intersection, "intersection", OpClass::Combine, 0, "instIntersection"},
-    {Opcode::Difference, "difference", OpClass::Combine, 0, "instDifference"},
-    {Opcode::SmoothUnion, "smooth_union", OpClass::Combine, 1, "instSmoothUnion"},
-    {Opcode::SmoothIntersection, "smooth_intersection", OpClass::Combine, 1, "instSmoothIntersection"},
-    {Opcode::SmoothDifference, "smooth_difference", OpClass::Combine, 1, "instSmoothDifference"},
-    {Opcode::ScaleDistance, "scale_distance", OpClass::Post, 1, "instScaleDistance"},
-    {Opcode::RoundDistance, "round_distance", OpClass::Post, 1, "instRoundDistance"},
-    {Opcode::Displace, "displace", OpClass::Post, 1, "instDisplace"},
-    {Opcode::StepScale, "step_scale", OpClass::Post, 1, "instStepScale"},
-    {Opcode::Empty, "empty", OpClass::Constant, 0, "instEmpty"},
+#define SDFWB_OPCODE_INFO(op, name, cls, slots, fn) {Opcode::op, name, OpClass::cls, slots, #fn},
+    SDFWB_OPCODES(SDFWB_OPCODE_INFO)
+#undef SDFWB_OPCODE_INFO
 }};
 
 constexpr const OpcodeInfo& opcodeInfo(Opcode op) { return kOpcodes[static_cast<size_t>(op)]; }
-
-static_assert([] {
-    for (int i = 0; i < kOpcodeCount; ++i) {
-        if (static_cast<int>(kOpcodes[static_cast<size_t>(i)].op) != i) {
-            return false;
-        }
-    }
-    return true;
-}(), "kOpcodes must list every opcode in enum order");
 
 }  // namespace sdfwb::program
