@@ -1,6 +1,7 @@
 #include "program/compile_scene.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -9,6 +10,7 @@
 #include "expr/formula.h"
 #include "program/rotation.h"
 #include "scene/camera_frame.h"
+#include "sdf/shared.h"
 
 namespace sdfwb::program {
 
@@ -19,13 +21,73 @@ using scene::NodeKind;
 
 namespace {
 
-// Codes shared with the tracer and operators of the shared library.
-constexpr int kSmoothVariantCodes = 4;  // polynomial, exponential, power, root: SMOOTH_* in operators.glsl
+// Scene enums become the shared library's integer codes by static_cast; these
+// keep the two numberings one.
+namespace codes = sdf::f32;
+static_assert(static_cast<int>(scene::ShadowMode::None) == codes::SHADOW_NONE);
+static_assert(static_cast<int>(scene::ShadowMode::Hard) == codes::SHADOW_HARD);
+static_assert(static_cast<int>(scene::ShadowMode::Soft) == codes::SHADOW_SOFT);
+static_assert(static_cast<int>(scene::ShadowMode::Improved) == codes::SHADOW_IMPROVED);
+static_assert(static_cast<int>(scene::LightingModel::BlinnPhong) == codes::LIGHTING_BLINN_PHONG);
+static_assert(static_cast<int>(scene::LightingModel::Phong) == codes::LIGHTING_PHONG);
+static_assert(static_cast<int>(scene::GroundPattern::Plain) == codes::GROUND_PLAIN);
+static_assert(static_cast<int>(scene::GroundPattern::Checker) == codes::GROUND_CHECKER);
+static_assert(static_cast<int>(scene::GroundPattern::Grid) == codes::GROUND_GRID);
+static_assert(static_cast<int>(scene::SmoothVariant::Polynomial) == codes::SMOOTH_POLYNOMIAL);
+static_assert(static_cast<int>(scene::SmoothVariant::Exponential) == codes::SMOOTH_EXPONENTIAL);
+static_assert(static_cast<int>(scene::SmoothVariant::Power) == codes::SMOOTH_POWER);
+static_assert(static_cast<int>(scene::SmoothVariant::Root) == codes::SMOOTH_ROOT);
+// Epsilon modes have no shared code: the compiler turns them into epsilon and
+// epsilonPerDistance below.
 
 // Twist and bend stretch space: the field's Lipschitz constant grows to about
 // sqrt(1 + (k r)^2) at radius r from the axis. Steps are scaled by its inverse
 // over the child's bounds, never below this floor (an unbounded child).
 constexpr double kMinStepFactor = 0.05;
+
+// A primitive's opcode and parameter slots, packed from its fields.
+struct ShapeCode {
+    Opcode op;
+    std::vector<dvec4> params;
+};
+
+ShapeCode sphereCode(const Node& n) { return {Opcode::Sphere, {dvec4(n.real("radius"), 0, 0, 0)}}; }
+ShapeCode boxCode(const Node& n) { return {Opcode::Box, {dvec4(n.vec3("half_extents"), 0)}}; }
+ShapeCode roundBoxCode(const Node& n) {
+    dvec3 h = n.vec3("half_extents");
+    double r = std::min(n.real("radius"), std::min(h.x, std::min(h.y, h.z)));
+    return {Opcode::RoundBox, {dvec4(h, r)}};
+}
+ShapeCode planeCode(const Node& n) {
+    return {Opcode::Plane, {dvec4(glm::normalize(n.vec3("normal")), n.real("offset"))}};
+}
+ShapeCode torusCode(const Node& n) {
+    return {Opcode::Torus, {dvec4(n.real("major_radius"), n.real("minor_radius"), 0, 0)}};
+}
+ShapeCode coneCode(const Node& n) {
+    double angle = n.real("angle") * M_PI / 180.0;
+    return {Opcode::Cone, {dvec4(std::sin(angle), std::cos(angle), n.real("height"), 0)}};
+}
+ShapeCode ellipsoidCode(const Node& n) { return {Opcode::Ellipsoid, {dvec4(n.vec3("radii"), 0)}}; }
+ShapeCode cylinderCode(const Node& n) {
+    return {Opcode::Cylinder, {dvec4(n.real("radius"), n.real("half_height"), 0, 0)}};
+}
+ShapeCode capsuleCode(const Node& n) {
+    return {Opcode::Capsule, {dvec4(n.vec3("a"), n.real("radius")), dvec4(n.vec3("b"), 0)}};
+}
+
+// Operators that only move the evaluation point: opcode and slots.
+ShapeCode elongateCode(const Node& n) { return {Opcode::Elongate, {dvec4(n.vec3("h"), 0)}}; }
+ShapeCode mirrorCode(const Node& n) {
+    const std::string& axes = n.text("axes");
+    dvec3 mask(axes.find('x') != std::string::npos, axes.find('y') != std::string::npos,
+               axes.find('z') != std::string::npos);
+    return {Opcode::Mirror, {dvec4(mask, 0)}};
+}
+ShapeCode repeatCode(const Node& n) {
+    return {Opcode::Repeat, {dvec4(n.vec3("spacing"), 0), dvec4(n.vec3("counts"), 0)}};
+}
+ShapeCode repeatInfiniteCode(const Node& n) { return {Opcode::RepeatInfinite, {dvec4(n.vec3("period"), 0)}}; }
 
 class Compiler {
 public:
@@ -39,13 +101,7 @@ public:
     Program& program() { return program_; }
 
     // Compiles `node` evaluated at P[point] + offset; returns the sample register.
-    int compile(const Node& node, int point, dvec3 offset) {
-        switch (kindSpec(node.kind).category) {
-        case scene::NodeCategory::Primitive: return compilePrimitive(node, point, offset);
-        case scene::NodeCategory::Boolean: return compileBoolean(node, point, offset);
-        default: return compileUnary(node, point, offset);
-        }
-    }
+    int compile(const Node& node, int point, dvec3 offset);
 
     int compileGround(const scene::Ground& ground, const dvec3& eye) {
         int s = allocSample();
@@ -60,8 +116,123 @@ public:
         releaseSample();
     }
 
+    // ---- one entry per node kind (kCompileRules) ----
+    template <ShapeCode (*code)(const Node&)>
+    int primitive(const Node& node, int point, dvec3 offset) {
+        int p = materialize(point, offset);
+        int s = allocSample();
+        ShapeCode shape = code(node);
+        emit({shape.op, s, p, -1, addParams(shape.params), materialSlot(node.text("material")), 0});
+        if (p != point) releasePoint();
+        return s;
+    }
+
+    int sdfFormula(const Node& node, int point, dvec3 offset) {
+        int p = materialize(point, offset);
+        int s = allocSample();
+        emit({Opcode::SdfFormula, s, p, -1, -1, materialSlot(node.text("material")),
+              addFormula(node.text("formula"), false)});
+        if (p != point) releasePoint();
+        return s;
+    }
+
+    // Implicit and polynomial surfaces: F = 0 inside a box, value and gradient from the tape.
+    int implicitFormula(const Node& node, int point, dvec3 offset) {
+        int p = materialize(point, offset);
+        int s = allocSample();
+        dvec3 lo = node.vec3("bounds_min"), hi = node.vec3("bounds_max");
+        int param = addParams({dvec4((lo + hi) * 0.5, node.real("max_step")),
+                               dvec4((hi - lo) * 0.5, node.real("sheet_thickness") * 0.5)});
+        int material = materialSlot(node.text("material"));
+        emit({Opcode::ImplicitFormula, s, p, -1, param, material, addFormula(node.text("formula"), true)});
+        if (p != point) releasePoint();
+        return s;
+    }
+
+    template <Opcode op>
+    int hardBoolean(const Node& node, int point, dvec3 offset) {
+        return fold(node, point, offset, op, -1, 0);
+    }
+
+    template <Opcode op>
+    int smoothBoolean(const Node& node, int point, dvec3 offset) {
+        if (node.children.empty()) return fold(node, point, offset, op, -1, 0);
+        const scene::KindSpec& spec = kindSpec(node.kind);
+        const auto& choices = spec.fields[static_cast<size_t>(fieldIndex(spec, "variant"))].choices;
+        int variant = static_cast<int>(std::find(choices.begin(), choices.end(), node.text("variant")) - choices.begin());
+        // the first child is compiled before the parameters are added, as the slots have always been laid out
+        int accumulator = compile(node.children[0], point, offset);
+        int param = addParams({dvec4(node.real("k"), node.real("exponent"), 0, 0)});
+        return foldRest(node, point, offset, op, accumulator, param, variant);
+    }
+
+    int translate(const Node& node, int point, dvec3 offset) {
+        return compile(node.children.at(0), point, offset - node.vec3("offset"));
+    }
+
+    int rotate(const Node& node, int point, dvec3 offset) {
+        glm::dmat3 inverse = glm::transpose(rotationFromAngles(node.vec3("angles")));
+        // rows of the inverse rotation
+        int r = pointOp(Opcode::Rotate, point,
+                        {dvec4(inverse[0][0], inverse[1][0], inverse[2][0], 0),
+                         dvec4(inverse[0][1], inverse[1][1], inverse[2][1], 0),
+                         dvec4(inverse[0][2], inverse[1][2], inverse[2][2], 0)});
+        int s = compile(node.children.at(0), r, inverse * offset);
+        releasePoint();
+        return s;
+    }
+
+    int scale(const Node& node, int point, dvec3 offset) {
+        double factor = node.real("factor");
+        int r = pointOp(Opcode::Scale, point, {dvec4(factor, 0, 0, 0)});
+        int s = compile(node.children.at(0), r, offset / factor);
+        releasePoint();
+        postOp(Opcode::ScaleDistance, s, r, {dvec4(factor, 0, 0, 0)});
+        return s;
+    }
+
+    int round(const Node& node, int point, dvec3 offset) {
+        int s = compile(node.children.at(0), point, offset);
+        postOp(Opcode::RoundDistance, s, point, {dvec4(node.real("radius"), 0, 0, 0)});
+        return s;
+    }
+
+    int displace(const Node& node, int point, dvec3 offset) {
+        int p = materialize(point, offset);
+        int s = compile(node.children.at(0), p, dvec3(0.0));
+        double amplitude = node.real("amplitude"), frequency = node.real("frequency");
+        // |grad pattern| <= |a f| sqrt(3): scale steps so the field stays 1-Lipschitz
+        double factor = 1.0 / (1.0 + std::abs(amplitude * frequency) * std::sqrt(3.0));
+        postOp(Opcode::Displace, s, p, {dvec4(amplitude, frequency, factor, 0)});
+        if (p != point) releasePoint();
+        return s;
+    }
+
+    // Twist and bend: the point moves, and steps shrink by the Lipschitz bound over the child's bounds.
+    template <Opcode op>
+    int warp(const Node& node, int point, dvec3 offset) {
+        const Node& child = node.children.at(0);
+        int p = materialize(point, offset);
+        double k = node.real("k");
+        int r = pointOp(op, p, {dvec4(k, 0, 0, 0)});
+        Bounds b = nodeBounds(child);
+        double radius = op == Opcode::Twist ? b.radiusAboutY() : b.radiusAboutZ();
+        double factor = stepFactor(k, b.infinite ? INFINITY : radius);
+        return finishPointOp(child, point, p, r, factor);
+    }
+
+    template <ShapeCode (*code)(const Node&)>
+    int pointTransform(const Node& node, int point, dvec3 offset) {
+        int p = materialize(point, offset);
+        ShapeCode transform = code(node);
+        int r = allocPoint();
+        emit({transform.op, r, p, -1, addParams(transform.params), -1, 0});
+        return finishPointOp(node.children.at(0), point, p, r, 1.0);
+    }
+
 private:
-    int addParams(std::initializer_list<dvec4> values) {
+    int addParams(std::initializer_list<dvec4> values) { return addParams(std::vector<dvec4>(values)); }
+    int addParams(const std::vector<dvec4>& values) {
         int first = static_cast<int>(program_.params.size());
         program_.params.insert(program_.params.end(), values.begin(), values.end());
         return first;
@@ -126,87 +297,30 @@ private:
         emit({op, sample, sample, point, addParams(params), -1, 0});
     }
 
-    int compilePrimitive(const Node& node, int point, dvec3 offset) {
-        int p = materialize(point, offset);
-        int s = allocSample();
-        int material = materialSlot(node.text("material"));
-        auto shape = [&](Opcode op, std::initializer_list<dvec4> params) {
-            emit({op, s, p, -1, addParams(params), material, 0});
-        };
-        switch (node.kind) {
-        case NodeKind::Sphere: shape(Opcode::Sphere, {dvec4(node.real("radius"), 0, 0, 0)}); break;
-        case NodeKind::Box: shape(Opcode::Box, {dvec4(node.vec3("half_extents"), 0)}); break;
-        case NodeKind::RoundBox: {
-            dvec3 h = node.vec3("half_extents");
-            double r = std::min(node.real("radius"), std::min(h.x, std::min(h.y, h.z)));
-            shape(Opcode::RoundBox, {dvec4(h, r)});
-            break;
-        }
-        case NodeKind::Plane:
-            shape(Opcode::Plane, {dvec4(glm::normalize(node.vec3("normal")), node.real("offset"))});
-            break;
-        case NodeKind::Torus:
-            shape(Opcode::Torus, {dvec4(node.real("major_radius"), node.real("minor_radius"), 0, 0)});
-            break;
-        case NodeKind::Cone: {
-            double angle = node.real("angle") * M_PI / 180.0;
-            shape(Opcode::Cone, {dvec4(std::sin(angle), std::cos(angle), node.real("height"), 0)});
-            break;
-        }
-        case NodeKind::Ellipsoid: shape(Opcode::Ellipsoid, {dvec4(node.vec3("radii"), 0)}); break;
-        case NodeKind::Cylinder:
-            shape(Opcode::Cylinder, {dvec4(node.real("radius"), node.real("half_height"), 0, 0)});
-            break;
-        case NodeKind::Capsule:
-            shape(Opcode::Capsule, {dvec4(node.vec3("a"), node.real("radius")), dvec4(node.vec3("b"), 0)});
-            break;
-        case NodeKind::Sdf:
-            emit({Opcode::SdfFormula, s, p, -1, -1, material, addFormula(node.text("formula"), false)});
-            break;
-        case NodeKind::Implicit:
-        case NodeKind::Polynomial: {
-            dvec3 lo = node.vec3("bounds_min"), hi = node.vec3("bounds_max");
-            emit({Opcode::ImplicitFormula, s, p, -1,
-                  addParams({dvec4((lo + hi) * 0.5, node.real("max_step")),
-                             dvec4((hi - lo) * 0.5, node.real("sheet_thickness") * 0.5)}),
-                  material,
-                  addFormula(node.text("formula"), true)});
-            break;
-        }
-        default: break;
-        }
-        if (p != point) {
-            releasePoint();
+    // The child of a point operator at P[r]; then the registers are released and
+    // a step factor below 1 is applied.
+    int finishPointOp(const Node& child, int point, int p, int r, double factor) {
+        int s = compile(child, r, dvec3(0.0));
+        releasePoint();
+        if (p != point) releasePoint();
+        if (factor < 1.0) {
+            postOp(Opcode::StepScale, s, point, {dvec4(factor, 0, 0, 0)});
         }
         return s;
     }
 
-    int compileBoolean(const Node& node, int point, dvec3 offset) {
+    // Booleans fold their children left to right; no children is "nothing".
+    int fold(const Node& node, int point, dvec3 offset, Opcode op, int param, int variant) {
         if (node.children.empty()) {
             int s = allocSample();
             emit({Opcode::Empty, s, -1, -1, -1, -1, 0});
             return s;
         }
         int accumulator = compile(node.children[0], point, offset);
-        Opcode op = Opcode::Union;
-        int variant = 0;
-        bool smooth = false;
-        switch (node.kind) {
-        case NodeKind::Union: op = Opcode::Union; break;
-        case NodeKind::Intersection: op = Opcode::Intersection; break;
-        case NodeKind::Difference: op = Opcode::Difference; break;
-        case NodeKind::SmoothUnion: op = Opcode::SmoothUnion; smooth = true; break;
-        case NodeKind::SmoothIntersection: op = Opcode::SmoothIntersection; smooth = true; break;
-        case NodeKind::SmoothDifference: op = Opcode::SmoothDifference; smooth = true; break;
-        default: break;
-        }
-        int param = -1;
-        if (smooth) {
-            const auto& choices = kindSpec(node.kind).fields[static_cast<size_t>(fieldIndex(kindSpec(node.kind), "variant"))].choices;
-            variant = static_cast<int>(std::find(choices.begin(), choices.end(), node.text("variant")) - choices.begin());
-            variant = std::clamp(variant, 0, kSmoothVariantCodes - 1);
-            param = addParams({dvec4(node.real("k"), node.real("exponent"), 0, 0)});
-        }
+        return foldRest(node, point, offset, op, accumulator, param, variant);
+    }
+
+    int foldRest(const Node& node, int point, dvec3 offset, Opcode op, int accumulator, int param, int variant) {
         for (size_t i = 1; i < node.children.size(); ++i) {
             int other = compile(node.children[i], point, offset);
             combine(op, accumulator, other, param, variant);
@@ -221,88 +335,6 @@ private:
         return std::max(kMinStepFactor, 1.0 / std::sqrt(1.0 + k * k * radius * radius));
     }
 
-    int compileUnary(const Node& node, int point, dvec3 offset) {
-        const Node& child = node.children.at(0);
-        switch (node.kind) {
-        case NodeKind::Translate: return compile(child, point, offset - node.vec3("offset"));
-        case NodeKind::Rotate: {
-            glm::dmat3 inverse = glm::transpose(rotationFromAngles(node.vec3("angles")));
-            // rows of the inverse rotation
-            int r = pointOp(Opcode::Rotate, point,
-                            {dvec4(inverse[0][0], inverse[1][0], inverse[2][0], 0),
-                             dvec4(inverse[0][1], inverse[1][1], inverse[2][1], 0),
-                             dvec4(inverse[0][2], inverse[1][2], inverse[2][2], 0)});
-            int s = compile(child, r, inverse * offset);
-            releasePoint();
-            return s;
-        }
-        case NodeKind::Scale: {
-            double factor = node.real("factor");
-            int r = pointOp(Opcode::Scale, point, {dvec4(factor, 0, 0, 0)});
-            int s = compile(child, r, offset / factor);
-            releasePoint();
-            postOp(Opcode::ScaleDistance, s, r, {dvec4(factor, 0, 0, 0)});
-            return s;
-        }
-        case NodeKind::Round: {
-            int s = compile(child, point, offset);
-            postOp(Opcode::RoundDistance, s, point, {dvec4(node.real("radius"), 0, 0, 0)});
-            return s;
-        }
-        case NodeKind::Displace: {
-            int p = materialize(point, offset);
-            int s = compile(child, p, dvec3(0.0));
-            double amplitude = node.real("amplitude"), frequency = node.real("frequency");
-            // |grad pattern| <= |a f| sqrt(3): scale steps so the field stays 1-Lipschitz
-            double factor = 1.0 / (1.0 + std::abs(amplitude * frequency) * std::sqrt(3.0));
-            postOp(Opcode::Displace, s, p, {dvec4(amplitude, frequency, factor, 0)});
-            if (p != point) releasePoint();
-            return s;
-        }
-        default: break;
-        }
-
-        int p = materialize(point, offset);
-        int r = -1;
-        double factor = 1.0;
-        switch (node.kind) {
-        case NodeKind::Twist: {
-            double k = node.real("k");
-            r = pointOp(Opcode::Twist, p, {dvec4(k, 0, 0, 0)});
-            Bounds b = nodeBounds(child);
-            factor = stepFactor(k, b.infinite ? INFINITY : b.radiusAboutY());
-            break;
-        }
-        case NodeKind::Bend: {
-            double k = node.real("k");
-            r = pointOp(Opcode::Bend, p, {dvec4(k, 0, 0, 0)});
-            Bounds b = nodeBounds(child);
-            factor = stepFactor(k, b.infinite ? INFINITY : b.radiusAboutZ());
-            break;
-        }
-        case NodeKind::Elongate: r = pointOp(Opcode::Elongate, p, {dvec4(node.vec3("h"), 0)}); break;
-        case NodeKind::Mirror: {
-            const std::string& axes = node.text("axes");
-            dvec3 mask(axes.find('x') != std::string::npos, axes.find('y') != std::string::npos,
-                       axes.find('z') != std::string::npos);
-            r = pointOp(Opcode::Mirror, p, {dvec4(mask, 0)});
-            break;
-        }
-        case NodeKind::Repeat:
-            r = pointOp(Opcode::Repeat, p, {dvec4(node.vec3("spacing"), 0), dvec4(node.vec3("counts"), 0)});
-            break;
-        case NodeKind::RepeatInfinite: r = pointOp(Opcode::RepeatInfinite, p, {dvec4(node.vec3("period"), 0)}); break;
-        default: break;
-        }
-        int s = compile(child, r, dvec3(0.0));
-        releasePoint();
-        if (p != point) releasePoint();
-        if (factor < 1.0) {
-            postOp(Opcode::StepScale, s, point, {dvec4(factor, 0, 0, 0)});
-        }
-        return s;
-    }
-
     const scene::Scene& scene_;
     Program program_;
     std::map<std::string, int> materialSlots_;
@@ -310,6 +342,51 @@ private:
     int pointTop_ = 1;
     int sampleTop_ = 0;
 };
+
+// How each node kind compiles, in NodeKind order (checked below): a new kind
+// without an entry does not build.
+struct CompileRule {
+    NodeKind kind;
+    int (Compiler::*compile)(const Node&, int, dvec3);
+};
+
+using enum NodeKind;
+constexpr std::array<CompileRule, scene::kNodeKindCount> kCompileRules = {{
+    {Sphere, &Compiler::primitive<sphereCode>},
+    {Box, &Compiler::primitive<boxCode>},
+    {RoundBox, &Compiler::primitive<roundBoxCode>},
+    {Plane, &Compiler::primitive<planeCode>},
+    {Torus, &Compiler::primitive<torusCode>},
+    {Cone, &Compiler::primitive<coneCode>},
+    {Ellipsoid, &Compiler::primitive<ellipsoidCode>},
+    {Cylinder, &Compiler::primitive<cylinderCode>},
+    {Capsule, &Compiler::primitive<capsuleCode>},
+    {Union, &Compiler::hardBoolean<Opcode::Union>},
+    {Intersection, &Compiler::hardBoolean<Opcode::Intersection>},
+    {Difference, &Compiler::hardBoolean<Opcode::Difference>},
+    {SmoothUnion, &Compiler::smoothBoolean<Opcode::SmoothUnion>},
+    {SmoothIntersection, &Compiler::smoothBoolean<Opcode::SmoothIntersection>},
+    {SmoothDifference, &Compiler::smoothBoolean<Opcode::SmoothDifference>},
+    {Translate, &Compiler::translate},
+    {Rotate, &Compiler::rotate},
+    {Scale, &Compiler::scale},
+    {Twist, &Compiler::warp<Opcode::Twist>},
+    {Bend, &Compiler::warp<Opcode::Bend>},
+    {NodeKind::Round, &Compiler::round},
+    {NodeKind::Displace, &Compiler::displace},
+    {NodeKind::Elongate, &Compiler::pointTransform<elongateCode>},
+    {NodeKind::Mirror, &Compiler::pointTransform<mirrorCode>},
+    {NodeKind::Repeat, &Compiler::pointTransform<repeatCode>},
+    {NodeKind::RepeatInfinite, &Compiler::pointTransform<repeatInfiniteCode>},
+    {Sdf, &Compiler::sdfFormula},
+    {Implicit, &Compiler::implicitFormula},
+    {Polynomial, &Compiler::implicitFormula},
+}};
+static_assert(scene::inKindOrder(kCompileRules), "kCompileRules must list every node kind in NodeKind order");
+
+int Compiler::compile(const Node& node, int point, dvec3 offset) {
+    return (this->*kCompileRules[static_cast<size_t>(node.kind)].compile)(node, point, offset);
+}
 
 }  // namespace
 

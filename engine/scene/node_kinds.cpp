@@ -15,7 +15,6 @@ using glm::dvec3;
 using enum FieldType;
 using enum Range;
 
-constexpr std::string_view kSmoothVariants[] = {"polynomial", "exponential", "power", "root"};
 constexpr std::string_view kMirrorAxes[] = {"x", "y", "z", "xy", "xz", "yz", "xyz"};
 
 FieldSpec real(std::string_view name, Range range, double value, std::string_view unit = "") {
@@ -45,7 +44,7 @@ const std::array kCylinder = {real("radius", Positive, 0.5), real("half_height",
 const std::array kCapsule = {vec3("a", Any, dvec3(0, -0.5, 0)), vec3("b", Any, dvec3(0, 0.5, 0)),
                              real("radius", Positive, 0.25), material()};
 const std::array<FieldSpec, 0> kNoFields = {};
-const std::array kSmooth = {real("k", NonNegative, 0.25), choice("variant", kSmoothVariants),
+const std::array kSmooth = {real("k", NonNegative, 0.25), choice("variant", kSmoothVariantNames),
                             real("exponent", Integer2or3, 2.0)};
 const std::array kTranslate = {vec3("offset", Any, dvec3(0.0))};
 const std::array kRotate = {vec3("angles", Any, dvec3(0.0), "degrees")};

@@ -2,6 +2,7 @@
 // The node kinds of the scene tree and their fields: one table drives JSON
 // loading and saving, validation, the compiler's field lookups and the editor.
 
+#include <iterator>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,6 +29,23 @@ enum class NodeKind {
     Sdf, Implicit, Polynomial,
 };
 inline constexpr int kNodeKindCount = static_cast<int>(NodeKind::Polynomial) + 1;
+
+// True when table[i].kind == NodeKind(i) for every kind: the check that keeps the
+// tables other layers key by kind (compile rules, bounds rules) complete and in order.
+template <typename Table>
+constexpr bool inKindOrder(const Table& table) {
+    if (table.size() != static_cast<size_t>(kNodeKindCount)) return false;
+    for (size_t i = 0; i < table.size(); ++i) {
+        if (static_cast<size_t>(table[i].kind) != i) return false;
+    }
+    return true;
+}
+
+// The variants of the smooth booleans' "variant" field, with their JSON names in
+// enum order; the shared library's SMOOTH_* codes are checked against them.
+enum class SmoothVariant { Polynomial, Exponential, Power, Root };
+inline constexpr std::string_view kSmoothVariantNames[] = {"polynomial", "exponential", "power", "root"};
+static_assert(std::size(kSmoothVariantNames) == static_cast<size_t>(SmoothVariant::Root) + 1);
 
 enum class NodeCategory { Primitive, Boolean, Affine, Deforming, Repetition };
 
