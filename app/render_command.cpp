@@ -31,8 +31,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
     render->add_option("-o,--output", a.output, "Output image: .png, .jpg, .tif (8-bit sRGB) or .exr (linear float)")
         ->required();
     render->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default: the scene's render.width x height)");
-    render->add_option("--aa", a.aa, "Antialiasing: AA x AA samples per pixel, 1-8 (default: the scene's)")
-        ->check(CLI::Range(1, 8));
+    render->add_option("--aa", a.aa, "Antialiasing: AA x AA samples per pixel, 1-" + std::to_string(scene::kMaxAa) + " (default: the scene's)")
+        ->check(CLI::Range(1, scene::kMaxAa));
     render->add_option("--threads", a.threads, "CPU threads (default: all)")->check(CLI::Range(1, 1024));
     render->add_option("--backend", a.backend, "Renderer: cpu (reference) or gl (GLSL, headless through OSMesa)")
         ->check(CLI::IsMember({"cpu", "gl"}));

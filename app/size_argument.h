@@ -6,7 +6,7 @@
 
 namespace sdfwb::app {
 
-// "WxH" -> (W, H), each from 1 to 16384; throws std::runtime_error quoting the text.
+// "WxH" -> (W, H), each from 1 to scene::kMaxImageSize; throws std::runtime_error quoting the text.
 std::pair<int, int> parseSizeArgument(const std::string& text);
 
 }  // namespace sdfwb::app

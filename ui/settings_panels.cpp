@@ -25,11 +25,6 @@ WidgetEdit dragInt(const char* label, int& value, float speed, int minimum, int 
 // A combo or checkbox: each change is its own undo step.
 WidgetEdit discrete(bool changed) { return {changed, changed}; }
 
-constexpr const char* kShadowModes[] = {"none", "hard", "soft", "improved"};
-constexpr const char* kLightingModels[] = {"blinn_phong", "phong"};
-constexpr const char* kEpsilonModes[] = {"absolute", "pixel"};
-constexpr const char* kGroundPatterns[] = {"plain", "checker", "grid"};
-
 }  // namespace
 
 void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
@@ -38,17 +33,17 @@ void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
         commitEdit(editor, ui, edit, "Edit render settings", [&r](scene::Scene& s) { s.render = r; });
     };
     ImGui::PushItemWidth(-130);
-    set(dragInt("AA level", r.aa, 0.05f, 1, 8));
-    set(dragInt("snapshot width", r.width, 1.0f, 1, 16384));
-    set(dragInt("snapshot height", r.height, 1.0f, 1, 16384));
-    set(discrete(enumCombo("shadows", r.shadows, kShadowModes)));
-    set(dragInt("shadow steps", r.shadowSteps, 0.5f, 1, 4096));
-    set(dragInt("AO samples", r.aoSamples, 0.1f, 0, 64));
+    set(dragInt("AA level", r.aa, 0.05f, 1, scene::kMaxAa));
+    set(dragInt("snapshot width", r.width, 1.0f, 1, scene::kMaxImageSize));
+    set(dragInt("snapshot height", r.height, 1.0f, 1, scene::kMaxImageSize));
+    set(discrete(enumCombo("shadows", r.shadows, scene::kShadowModeNames)));
+    set(dragInt("shadow steps", r.shadowSteps, 0.5f, 1, scene::kMaxShadowSteps));
+    set(dragInt("AO samples", r.aoSamples, 0.1f, 0, scene::kMaxAoSamples));
     set(dragReal("AO distance", r.aoDistance, 0.01, 1e-4, 1e6));
-    set(discrete(enumCombo("lighting", r.lighting, kLightingModels)));
-    set(dragInt("max steps", r.maxSteps, 1.0f, 1, 8192));
+    set(discrete(enumCombo("lighting", r.lighting, scene::kLightingModelNames)));
+    set(dragInt("max steps", r.maxSteps, 1.0f, 1, scene::kMaxSteps));
     set(dragReal("max distance", r.maxDistance, 0.5, 1e-3, 1e9));
-    set(discrete(enumCombo("epsilon mode", r.epsilonMode, kEpsilonModes)));
+    set(discrete(enumCombo("epsilon mode", r.epsilonMode, scene::kEpsilonModeNames)));
     set(dragReal("epsilon", r.epsilon, r.epsilonMode == scene::EpsilonMode::Pixel ? 0.01 : 1e-5, 1e-9, 1e6, "%.5g"));
     ImGui::PopItemWidth();
 }
@@ -65,7 +60,7 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
     ImGui::TextDisabled("Ground plane");
     set(discrete(ImGui::Checkbox("enabled", &e.ground.enabled)));
     set(dragReal("height", e.ground.height, 0.01, -1e6, 1e6));
-    set(discrete(enumCombo("pattern", e.ground.pattern, kGroundPatterns)));
+    set(discrete(enumCombo("pattern", e.ground.pattern, scene::kGroundPatternNames)));
     set(dragReal("cell size", e.ground.cellSize, 0.01, 1e-4, 1e6));
     set(dragReal("line width", e.ground.lineWidth, 0.001, 0.0, 1e6));
     set(colorEdit("second colour", e.ground.secondColor));

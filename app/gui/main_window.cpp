@@ -277,15 +277,15 @@ void snapshotDialog(AppState& app) {
     ImGui::SetNextItemWidth(200);
     ImGui::InputInt2("size", &s.width);
     ImGui::SetNextItemWidth(200);
-    ImGui::SliderInt("AA", &s.aa, 1, 8);
+    ImGui::SliderInt("AA", &s.aa, 1, scene::kMaxAa);
     int backend = s.gl ? 1 : 0;
     ImGui::RadioButton("CPU", &backend, 0);
     ImGui::SameLine();
     ImGui::RadioButton("GLSL", &backend, 1);
     s.gl = backend == 1;
     ImGui::EndDisabled();
-    s.width = std::clamp(s.width, 1, 16384);
-    s.height = std::clamp(s.height, 1, 16384);
+    s.width = std::clamp(s.width, 1, scene::kMaxImageSize);
+    s.height = std::clamp(s.height, 1, scene::kMaxImageSize);
     if (snapshot.running()) {
         ImGui::ProgressBar(static_cast<float>(snapshot.progress()), ImVec2(360, 0));
         if (ImGui::Button("Cancel")) snapshot.cancel();

@@ -7,8 +7,8 @@ namespace sdfwb::parity {
 scene::Scene referenceScene(const scene::Scene& scene, double tightening) {
     scene::Scene tight = scene;
     tight.render.epsilon /= tightening;
-    tight.render.maxSteps = std::min(8192, static_cast<int>(tight.render.maxSteps * tightening));
-    tight.render.shadowSteps = std::min(4096, static_cast<int>(tight.render.shadowSteps * tightening));
+    tight.render.maxSteps = std::min(scene::kMaxSteps, static_cast<int>(tight.render.maxSteps * tightening));
+    tight.render.shadowSteps = std::min(scene::kMaxShadowSteps, static_cast<int>(tight.render.shadowSteps * tightening));
     return tight;
 }
 

@@ -2,6 +2,7 @@
 // The scene model: plain data, numbers as doubles, every field with a default.
 // The JSON format is documented in docs/scene-format.md.
 
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -62,12 +63,30 @@ struct Light {
 
     bool operator==(const Light&) const = default;
 };
-inline constexpr int kMaxLights = 8;
 
+// Limits of the scene format, used by validation, the editor and the CLI.
+inline constexpr int kMaxLights = 8;
+inline constexpr int kMaxImageSize = 16384;  // pixels, width and height
+inline constexpr int kMaxAa = 8;
+inline constexpr int kMaxSteps = 8192;       // primary march
+inline constexpr int kMaxShadowSteps = 4096;
+inline constexpr int kMaxAoSamples = 64;
+
+// Choices of the format, each with its JSON names in enum order. The shared
+// tracer's codes (SHADOW_*, LIGHTING_*, GROUND_*) are checked against these
+// enums in program/compile_scene.cpp.
 enum class ShadowMode { None, Hard, Soft, Improved };
+inline constexpr const char* kShadowModeNames[] = {"none", "hard", "soft", "improved"};
 enum class LightingModel { BlinnPhong, Phong };
+inline constexpr const char* kLightingModelNames[] = {"blinn_phong", "phong"};
 enum class EpsilonMode { Absolute, Pixel };
+inline constexpr const char* kEpsilonModeNames[] = {"absolute", "pixel"};
 enum class GroundPattern { Plain, Checker, Grid };
+inline constexpr const char* kGroundPatternNames[] = {"plain", "checker", "grid"};
+static_assert(std::size(kShadowModeNames) == static_cast<size_t>(ShadowMode::Improved) + 1);
+static_assert(std::size(kLightingModelNames) == static_cast<size_t>(LightingModel::Phong) + 1);
+static_assert(std::size(kEpsilonModeNames) == static_cast<size_t>(EpsilonMode::Pixel) + 1);
+static_assert(std::size(kGroundPatternNames) == static_cast<size_t>(GroundPattern::Grid) + 1);
 
 struct RenderSettings {
     int width = 960;                 // pixels

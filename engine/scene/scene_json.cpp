@@ -16,11 +16,6 @@ SceneError::SceneError(std::vector<std::string> problems)
 
 namespace {
 
-constexpr std::string_view kShadowModes[] = {"none", "hard", "soft", "improved"};
-constexpr std::string_view kLightingModels[] = {"blinn_phong", "phong"};
-constexpr std::string_view kEpsilonModes[] = {"absolute", "pixel"};
-constexpr std::string_view kGroundPatterns[] = {"plain", "checker", "grid"};
-
 std::string describe(double v) {
     std::ostringstream out;
     out << v;
@@ -121,7 +116,7 @@ public:
     }
 
     template <typename Enum, size_t N>
-    void choice(const json& value, const std::string& path, const std::string_view (&names)[N], Enum& out) {
+    void choice(const json& value, const std::string& path, const char* const (&names)[N], Enum& out) {
         std::string s;
         if (!value.is_string()) {
             fail(path, "must be a string");
@@ -318,11 +313,11 @@ void readCamera(Reader& reader, const json& value, const std::string& path, Came
 
 void readRender(Reader& reader, const json& value, const std::string& path, RenderSettings& render) {
     ObjectReader object(reader, value, path);
-    object.member("width", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 16384, render.width); });
-    object.member("height", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 16384, render.height); });
-    object.member("aa", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, 8, render.aa); });
+    object.member("width", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, kMaxImageSize, render.width); });
+    object.member("height", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, kMaxImageSize, render.height); });
+    object.member("aa", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, kMaxAa, render.aa); });
     object.member("max_steps", [&](const json& v, const std::string& p) {
-        reader.integer(v, p, 1, 8192, render.maxSteps);
+        reader.integer(v, p, 1, kMaxSteps, render.maxSteps);
     });
     object.member("max_distance", [&](const json& v, const std::string& p) {
         reader.numberAtLeast(v, p, 0, true, render.maxDistance);
@@ -331,18 +326,18 @@ void readRender(Reader& reader, const json& value, const std::string& path, Rend
         reader.numberAtLeast(v, p, 0, true, render.epsilon);
     });
     object.member("epsilon_mode", [&](const json& v, const std::string& p) {
-        reader.choice(v, p, kEpsilonModes, render.epsilonMode);
+        reader.choice(v, p, kEpsilonModeNames, render.epsilonMode);
     });
-    object.member("shadows", [&](const json& v, const std::string& p) { reader.choice(v, p, kShadowModes, render.shadows); });
+    object.member("shadows", [&](const json& v, const std::string& p) { reader.choice(v, p, kShadowModeNames, render.shadows); });
     object.member("shadow_steps", [&](const json& v, const std::string& p) {
-        reader.integer(v, p, 1, 4096, render.shadowSteps);
+        reader.integer(v, p, 1, kMaxShadowSteps, render.shadowSteps);
     });
-    object.member("ao_samples", [&](const json& v, const std::string& p) { reader.integer(v, p, 0, 64, render.aoSamples); });
+    object.member("ao_samples", [&](const json& v, const std::string& p) { reader.integer(v, p, 0, kMaxAoSamples, render.aoSamples); });
     object.member("ao_distance", [&](const json& v, const std::string& p) {
         reader.numberAtLeast(v, p, 0, true, render.aoDistance);
     });
     object.member("lighting", [&](const json& v, const std::string& p) {
-        reader.choice(v, p, kLightingModels, render.lighting);
+        reader.choice(v, p, kLightingModelNames, render.lighting);
     });
     object.member("step_relaxation", [&](const json& v, const std::string& p) {
         reader.numberBetween(v, p, 1, 1.9, render.stepRelaxation);
@@ -361,7 +356,7 @@ void readGround(Reader& reader, const json& value, const std::string& path, Grou
     });
     object.member("height", [&](const json& v, const std::string& p) { reader.number(v, p, ground.height); });
     object.member("material", [&](const json& v, const std::string& p) { reader.string(v, p, ground.material); });
-    object.member("pattern", [&](const json& v, const std::string& p) { reader.choice(v, p, kGroundPatterns, ground.pattern); });
+    object.member("pattern", [&](const json& v, const std::string& p) { reader.choice(v, p, kGroundPatternNames, ground.pattern); });
     object.member("cell_size", [&](const json& v, const std::string& p) { reader.numberAtLeast(v, p, 0, true, ground.cellSize); });
     object.member("line_width", [&](const json& v, const std::string& p) {
         reader.numberAtLeast(v, p, 0, false, ground.lineWidth);
@@ -467,7 +462,7 @@ std::string lineColumnMessage(std::string_view text, const nlohmann::json::parse
 json vec3Json(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
 template <size_t N, typename Enum>
-std::string nameOf(const std::string_view (&names)[N], Enum value) {
+std::string nameOf(const char* const (&names)[N], Enum value) {
     return std::string(names[static_cast<size_t>(value)]);
 }
 
@@ -615,12 +610,12 @@ json sceneToJson(const Scene& scene) {
                      {"max_steps", r.maxSteps},
                      {"max_distance", r.maxDistance},
                      {"epsilon", r.epsilon},
-                     {"epsilon_mode", nameOf(kEpsilonModes, r.epsilonMode)},
-                     {"shadows", nameOf(kShadowModes, r.shadows)},
+                     {"epsilon_mode", nameOf(kEpsilonModeNames, r.epsilonMode)},
+                     {"shadows", nameOf(kShadowModeNames, r.shadows)},
                      {"shadow_steps", r.shadowSteps},
                      {"ao_samples", r.aoSamples},
                      {"ao_distance", r.aoDistance},
-                     {"lighting", nameOf(kLightingModels, r.lighting)},
+                     {"lighting", nameOf(kLightingModelNames, r.lighting)},
                      {"step_relaxation", r.stepRelaxation}};
     const Environment& e = scene.environment;
     const Ground& g = e.ground;
@@ -630,7 +625,7 @@ json sceneToJson(const Scene& scene) {
                            {{"enabled", g.enabled},
                             {"height", g.height},
                             {"material", g.material},
-                            {"pattern", nameOf(kGroundPatterns, g.pattern)},
+                            {"pattern", nameOf(kGroundPatternNames, g.pattern)},
                             {"cell_size", g.cellSize},
                             {"line_width", g.lineWidth},
                             {"second_color", vec3Json(g.secondColor)}}}};
