@@ -1,5 +1,6 @@
 #include "tradeoff/measurements.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -51,7 +52,13 @@ std::string measurementKey(const scene::Scene& scene) {
     scene::Scene keyed = scene;
     keyed.name.clear();
     keyed.description.clear();
-    keyed.render = {};
+    // the look stays in the key: errors are against a reference of that look
+    scene::RenderSettings look;
+    look.shadows = scene.render.shadows;
+    look.lighting = scene.render.lighting;
+    look.aoSamples = scene.render.aoSamples > 0 ? 1 : 0;
+    look.aoDistance = scene.render.aoDistance;
+    keyed.render = look;
     std::string text = scene::serializeScene(keyed);
     std::uint64_t hash = 1469598103934665603ull;  // FNV-1a
     for (unsigned char c : text) {
@@ -64,11 +71,25 @@ std::string measurementKey(const scene::Scene& scene) {
 }
 
 void storeMeasurements(const std::filesystem::path& cacheDir, const std::string& key, const SceneMeasurements& m) {
+    SceneMeasurements merged = m;
+    std::optional<SceneMeasurements> stored = loadMeasurements(cacheDir, key);
+    if (stored && stored->backends == m.backends) {
+        merged = *stored;
+        for (const MeasuredPoint& p : m.points) {
+            auto same = std::find_if(merged.points.begin(), merged.points.end(),
+                                     [&](const MeasuredPoint& o) { return sameQuality(o.render, p.render); });
+            if (same != merged.points.end()) {
+                *same = p;
+            } else {
+                merged.points.push_back(p);
+            }
+        }
+    }
     json points = json::array();
-    for (const MeasuredPoint& p : m.points) {
+    for (const MeasuredPoint& p : merged.points) {
         points.push_back({{"render", renderJson(p.render)}, {"seconds", p.seconds}, {"mean_error", p.meanError}});
     }
-    json root = {{"backends", m.backends}, {"points", points}};
+    json root = {{"backends", merged.backends}, {"points", points}};
     std::error_code error;
     std::filesystem::create_directories(cacheDir, error);
     if (error) throw std::runtime_error("cannot create " + cacheDir.string() + ": " + error.message());

@@ -28,18 +28,22 @@ struct SceneMeasurements {
 // command's references and measurements.
 std::filesystem::path defaultCacheDirectory();
 
-// Hex key of a scene's content without its render settings, name and
-// description: edits of quality settings keep finding the measurements.
+// Hex key of a scene's content and look (shadow technique, lighting, whether
+// AO is on, AO distance), without its quality settings, name and description:
+// edits of quality settings keep finding the measurements, and scenes that
+// differ only in quality settings share them.
 std::string measurementKey(const scene::Scene& scene);
 
-// Writes atomically; throws std::runtime_error naming the path.
+// Adds `m`'s points to those stored under `key` (a point of equal settings,
+// size aside, is replaced; the first point stays first). Writes atomically;
+// throws std::runtime_error naming the path.
 void storeMeasurements(const std::filesystem::path& cacheDir, const std::string& key, const SceneMeasurements& m);
 // Nothing when absent or unreadable.
 std::optional<SceneMeasurements> loadMeasurements(const std::filesystem::path& cacheDir, const std::string& key);
 
 struct ErrorEstimate {
     double meanError = 0;          // levels of 255
-    double speedupOverDefault = 0; // the default's time over this setting's, first backend
+    double speedupOverDefault = 0; // the first stored point's (a sweep's default) time over this one's, first backend
 };
 
 // The measured point whose settings equal `render` (size aside); nothing when

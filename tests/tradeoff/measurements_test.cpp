@@ -27,6 +27,15 @@ TEST(MeasurementKey, IgnoresRenderSettingsAndNamesButNotContent) {
     scene::Scene viewed = s;
     viewed.camera.elevation = 40;
     EXPECT_NE(measurementKey(viewed), key);
+    scene::Scene shadowless = s;
+    shadowless.render.shadows = scene::ShadowMode::None;  // another look, another reference
+    EXPECT_NE(measurementKey(shadowless), key);
+    scene::Scene occluded = s;
+    occluded.render.aoSamples = 4;
+    EXPECT_NE(measurementKey(occluded), key);
+    scene::Scene moreSamples = occluded;
+    moreSamples.render.aoSamples = 8;
+    EXPECT_EQ(measurementKey(moreSamples), measurementKey(occluded));
 }
 
 SceneMeasurements twoPoints() {
@@ -71,6 +80,17 @@ TEST_F(MeasurementFiles, RoundTripAndDamagedFilesAreNoMeasurement) {
     EXPECT_EQ(back->points[1].render, m.points[1].render);
     EXPECT_EQ(back->points[1].seconds, m.points[1].seconds);
     EXPECT_FALSE(loadMeasurements(dir_, "other"));
+    // a second sweep adds its points and replaces those of equal settings
+    SceneMeasurements again = twoPoints();
+    again.points[0].meanError = 0.125;
+    again.points[1].render.maxSteps = 64;
+    storeMeasurements(dir_, "k", again);
+    std::optional<SceneMeasurements> merged = loadMeasurements(dir_, "k");
+    ASSERT_TRUE(merged);
+    ASSERT_EQ(merged->points.size(), 3u);
+    EXPECT_DOUBLE_EQ(merged->points[0].meanError, 0.125);
+    EXPECT_EQ(merged->points[1].render, m.points[1].render);
+    EXPECT_EQ(merged->points[2].render.maxSteps, 64);
     fs::resize_file(dir_ / "k.measured.json", 20);
     EXPECT_FALSE(loadMeasurements(dir_, "k"));
 }
