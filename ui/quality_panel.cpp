@@ -35,6 +35,12 @@ void drawQualityPresets(Editor& editor, UiState& ui, const tradeoff::SceneMeasur
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", static_cast<int>(preset.why.size()), preset.why.data());
     }
     ImGui::TextWrapped("%s", describeEstimate(measured, editor.scene().render).c_str());
+    // the tracing speed-up the presets use (docs/scene-format.md, step relaxation)
+    scene::RenderSettings r = editor.scene().render;
+    ImGui::PushItemWidth(-130);
+    commitEdit(editor, ui, dragReal("step relaxation", r.stepRelaxation, 0.01, 1.0, 1.9), "Edit render settings",
+               [&r](scene::Scene& s) { s.render = r; });
+    ImGui::PopItemWidth();
 }
 
 }  // namespace sdfwb::ui
