@@ -40,6 +40,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
         ->check(CLI::IsMember({"float", "double"}));
     render->add_option("--heat", a.heat, "Also write a step-count heat image to this file");
     render->add_option("--dump-shader", a.dumpShader, "gl backend: write the generated fragment shader to this file");
+    render->add_flag("--no-prune", a.noPrune, "Evaluate the whole scene everywhere (a reference for pruning)");
     render->add_flag("--stats", a.stats, "Print render time, steps per pixel and hit ratio (and the GL renderer)");
     return render;
 }
@@ -58,6 +59,7 @@ int runRender(const RenderArguments& a) {
             std::tie(options.width, options.height) = parseSizeArgument(a.size);
         }
         options.aa = a.aa;
+        options.prune = !a.noPrune;
         program::Program program = program::compileScene(scene, options);
 
         BackendRequest request;

@@ -18,6 +18,7 @@ struct RenderArguments {
     std::string heat;     // optional step-count heat image
     std::string dumpShader;  // write the generated fragment shader here (gl backend)
     bool stats = false;
+    bool noPrune = false;
 };
 
 CLI::App* addRenderCommand(CLI::App& app, RenderArguments& arguments);

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "expr/tape.h"
+#include "prune/prune_grid.h"
 #include "sdf/shared.h"
 
 namespace sdfwb::cpu {

@@ -87,12 +87,14 @@ inline void runConstant(F fn, const program::Instruction& in, const vec4*, Regis
     r.samples[in.dst] = fn(materialAtSlot(r.params, 0));
 }
 
-// The scene's distance field: runs the program's instructions on `point`. The
-// switch is expanded from the opcode table, one case per opcode.
-inline Sample mapProgram(const program::Program& program, const vec4* params, Scratch& scratch, vec3 point) {
+// Runs `code` (the program's instructions, or a pruned list of them) on
+// `point` and returns sample register `result`. The switch is expanded from
+// the opcode table, one case per opcode.
+inline Sample runCode(std::span<const program::Instruction> code, int result, const vec4* params, Scratch& scratch,
+                      vec3 point) {
     Registers r{scratch.points.data(), scratch.samples.data(), params, scratch};
     r.points[0] = point;
-    for (const program::Instruction& in : program.code) {
+    for (const program::Instruction& in : code) {
         const vec4* q = in.param >= 0 ? params + in.param : nullptr;
         switch (in.op) {
 #define SDFWB_OPCODE_CASE(op, name, cls, slots, fn)                                   \
@@ -103,7 +105,24 @@ inline Sample mapProgram(const program::Program& program, const vec4* params, Sc
 #undef SDFWB_OPCODE_CASE
         }
     }
-    return r.samples[program.result];
+    return r.samples[result];
+}
+
+// The scene's distance field: runs the program's instructions on `point`.
+inline Sample mapProgram(const program::Program& program, const vec4* params, Scratch& scratch, vec3 point) {
+    return runCode(program.code, program.result, params, scratch, point);
+}
+
+// The field at `point`: the pruned instructions of the point's cell when the
+// program has a grid (engine/prune), else the whole program.
+inline Sample fieldAt(const program::Program& program, const prune::PruneGrid* grid, const vec4* params,
+                      Scratch& scratch, vec3 point) {
+    if (grid == nullptr) {
+        return mapProgram(program, params, scratch, point);
+    }
+    const prune::PruneLeaf& leaf = grid->leaves[static_cast<size_t>(prune::leafIndexAt(*grid, point))];
+    std::span<const program::Instruction> code(grid->code.data() + leaf.offset, static_cast<size_t>(leaf.count));
+    return runCode(code, leaf.result, params, scratch, point);
 }
 
 struct SampleResult {
@@ -114,7 +133,8 @@ struct SampleResult {
 };
 
 // One sub-sample of one pixel, driven exactly as the GLSL backend's loop drives it.
-inline SampleResult traceSample(const program::Program& program, const vec4* params, Scratch& scratch,
+inline SampleResult traceSample(const program::Program& program, const prune::PruneGrid* grid, const vec4* params,
+                                Scratch& scratch,
                                 const Camera& camera, const TraceSettings& settings, const Light* lights, real px,
                                 real py) {
     Ray ray = cameraRay(camera, px, py, real(program.width), real(program.height));
@@ -124,7 +144,7 @@ inline SampleResult traceSample(const program::Program& program, const vec4* par
     while (s.phase != PHASE_DONE) {
         Light light = settings.lightCount > 0 ? lights[lightIndex(s) < settings.lightCount ? lightIndex(s) : 0] : noLight;
         if (traceNeedsSample(s)) {
-            field = mapProgram(program, params, scratch, tracePoint(s, light, settings));
+            field = fieldAt(program, grid, params, scratch, tracePoint(s, light, settings));
         }
         s = traceAdvance(s, field, light, settings);
     }
@@ -138,14 +158,20 @@ struct Kernel {
     using ScratchType = Scratch;
 
     const program::Program& program;
-    std::vector<vec4> params;
+    std::shared_ptr<const prune::PruneGrid> grid;
+    std::vector<vec4> params;  // the program's, then the grid's
     Camera camera;
     TraceSettings settings;
     std::vector<Light> lights;
 
-    explicit Kernel(const program::Program& p) : program(p) {
+    explicit Kernel(const program::Program& p) : program(p), grid(prune::pruneGridFor(p)) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
+        }
+        if (grid) {
+            for (const glm::dvec4& v : grid->extraParams) {
+                params.push_back(vec4(v));
+            }
         }
         const program::CameraParams& c = p.camera;
         camera = Camera(vec3(c.origin), vec3(c.forward), vec3(c.right), vec3(c.up), real(c.tanHalfFov));
@@ -159,7 +185,7 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        return traceSample(program, params.data(), scratch, camera, settings, lights.data(), px, py);
+        return traceSample(program, grid.get(), params.data(), scratch, camera, settings, lights.data(), px, py);
     }
 
     Sample map(Scratch& scratch, vec3 p) const { return mapProgram(program, params.data(), scratch, p); }

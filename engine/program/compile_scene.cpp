@@ -400,6 +400,13 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     }
     Program program = std::move(compiler.program());
     program.result = result;
+    Bounds root = nodeBounds(scene.root);
+    program.rootBounded = !root.empty && !root.infinite;
+    if (program.rootBounded) {
+        program.rootMin = root.min - frame.eye;
+        program.rootMax = root.max - frame.eye;
+    }
+    program.prune = options.prune;
 
     const scene::RenderSettings& r = scene.render;
     program.width = options.width > 0 ? options.width : r.width;

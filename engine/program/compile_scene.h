@@ -10,6 +10,7 @@ struct CompileOptions {
     int width = 0;   // 0: the scene's render.width
     int height = 0;  // 0: the scene's render.height
     int aa = 0;      // 0: the scene's render.aa
+    bool prune = true;  // false: no spatial pruning (a reference for tests and --no-prune)
 };
 
 // The scene must be valid (as loaded by sceneFromJson). Coordinates are shifted

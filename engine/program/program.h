@@ -77,6 +77,13 @@ struct Program {
     int sampleRegisters = 1;
     int result = 0;          // sample register holding the scene's distance
 
+    // March-coordinate box enclosing the scene's root (the ground excluded);
+    // rootBounded is false when some of it is unbounded (engine/prune).
+    bool rootBounded = false;
+    glm::dvec3 rootMin{0.0};
+    glm::dvec3 rootMax{0.0};
+    bool prune = true;  // debug switch: false evaluates the whole program everywhere
+
     CameraParams camera;
     TraceParams trace;
     std::vector<LightParams> lights;

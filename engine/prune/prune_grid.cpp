@@ -1,0 +1,257 @@
+#include "prune/prune_grid.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <deque>
+#include <mutex>
+
+#include <tbb/parallel_for.h>
+
+#include "prune/cell_pruning.h"
+#include "sdf/shared.h"
+
+namespace sdfwb::prune {
+
+using program::Instruction;
+using program::Opcode;
+
+namespace {
+
+// Root cells across the grid's longest side.
+constexpr int kRootCells = 8;
+// A cell is split while its list is longer than this.
+constexpr int kLeafTarget = 32;
+// Lights softer than this would need too wide a grid (gridMargin).
+constexpr double kMinSoftness = 1.25;
+// A split is kept when its children average at most this fraction of the
+// cell's instructions.
+constexpr double kSplitGain = 0.75;
+// Instructions stored over all leaves at most (memory: 28 bytes each).
+constexpr long kCodeBudget = 4000000;
+
+// One root cell's subtree, indices local to it until merged.
+struct LocalTree {
+    std::vector<int> nodes{0};  // nodes[0]: the root cell
+    std::vector<PruneLeaf> leaves;
+    std::vector<Instruction> code;
+};
+
+class Builder {
+public:
+    explicit Builder(const program::Program& program) : program_(program) {}
+
+    void buildRoot(LocalTree& tree, const CodeSpan& full, glm::dvec3 lo, double size) {
+        CellPruner pruner(program_);
+        tree.nodes[0] = build(pruner, tree, prunedFor(pruner, full, lo, size), lo, size, 0);
+    }
+
+private:
+    static CodeSpan prunedFor(CellPruner& pruner, const CodeSpan& parent, glm::dvec3 lo, double size) {
+        glm::dvec3 centre = lo + glm::dvec3(0.5 * size);
+        // the half diagonal, widened for points the float cell lookup files
+        // here from just outside
+        double radius = 0.5 * std::sqrt(3.0) * size * (1.0 + 1e-4) + 1e-6 * glm::length(centre);
+        return pruner.prune(parent, centre, radius);
+    }
+
+    int addLeaf(LocalTree& tree, const CodeSpan& span) {
+        tree.leaves.push_back({static_cast<int>(tree.code.size()), static_cast<int>(span.code.size()), span.result});
+        tree.code.insert(tree.code.end(), span.code.begin(), span.code.end());
+        stored_ += static_cast<long>(span.code.size());
+        return static_cast<int>(tree.leaves.size()) - 1;
+    }
+
+    // `pruned` is already pruned for this cell. The cell splits only where
+    // its children are markedly shorter on average, so the work and memory
+    // go where the scene is dense.
+    int build(CellPruner& pruner, LocalTree& tree, const CodeSpan& pruned, glm::dvec3 lo, double size, int depth) {
+        int count = static_cast<int>(pruned.code.size());
+        if (count <= kLeafTarget || depth >= kMaxDepth || stored_ > kCodeBudget) {
+            return addLeaf(tree, pruned);
+        }
+        constexpr int kChildren = kSplit * kSplit * kSplit;
+        double child = size / kSplit;
+        std::vector<CodeSpan> children(kChildren);
+        long total = 0;
+        for (int j = 0; j < kChildren; ++j) {
+            glm::dvec3 offset(j % kSplit, (j / kSplit) % kSplit, j / (kSplit * kSplit));
+            children[static_cast<size_t>(j)] = prunedFor(pruner, pruned, lo + offset * child, child);
+            total += static_cast<long>(children[static_cast<size_t>(j)].code.size());
+        }
+        if (static_cast<double>(total) > kSplitGain * kChildren * count) {
+            return addLeaf(tree, pruned);
+        }
+        size_t first = tree.nodes.size();
+        tree.nodes.resize(first + kChildren);
+        int unpruned = -1;  // one leaf for the children that prune nothing more
+        for (int j = 0; j < kChildren; ++j) {
+            glm::dvec3 offset(j % kSplit, (j / kSplit) % kSplit, j / (kSplit * kSplit));
+            const CodeSpan& span = children[static_cast<size_t>(j)];
+            int node = 0;
+            if (span.code.size() == pruned.code.size()) {
+                node = unpruned = unpruned >= 0 ? unpruned : addLeaf(tree, pruned);
+            } else {
+                node = build(pruner, tree, span, lo + offset * child, child, depth + 1);
+            }
+            tree.nodes[first + static_cast<size_t>(j)] = node;
+        }
+        return -static_cast<int>(first) - 1;
+    }
+
+    const program::Program& program_;
+    std::atomic<long> stored_{0};
+};
+
+// compileScene unions the ground plane last: Ground, then Union(result, ground).
+bool endsWithGround(const program::Program& program) {
+    size_t n = program.code.size();
+    return n >= 2 && program.code[n - 2].op == Opcode::Ground && program.code[n - 1].op == Opcode::Union &&
+           program.code[n - 1].a == program.result && program.code[n - 1].b == program.code[n - 2].dst;
+}
+
+// Outside the grid the field is replaced by a safe step, the distance to the
+// root's box, with a distance channel 2^20 times that: no hit, no penumbra,
+// no occlusion comes from out there (the margin makes that hold for the real
+// field too, see gridMargin), and the ground is unioned in exactly.
+constexpr double kOutsideDistanceScale = 1048576.0;  // a power of two: step = box distance exactly
+
+void addOutsideLeaf(const program::Program& program, PruneGrid& grid) {
+    int base = static_cast<int>(program.params.size());
+    glm::dvec3 centre = 0.5 * (program.rootMin + program.rootMax), half = 0.5 * (program.rootMax - program.rootMin);
+    grid.extraParams = {glm::dvec4(-centre, 0.0), glm::dvec4(half, 0.0), glm::dvec4(kOutsideDistanceScale, 0, 0, 0),
+                        glm::dvec4(1.0 / kOutsideDistanceScale, 0, 0, 0)};
+    int r = program.result;
+    PruneLeaf leaf{static_cast<int>(grid.code.size()), 4, r};
+    grid.code.push_back({Opcode::Translate, 1, 0, -1, base, -1, 0});
+    grid.code.push_back({Opcode::Box, r, 1, -1, base + 1, 0, 0});
+    grid.code.push_back({Opcode::ScaleDistance, r, r, 0, base + 2, -1, 0});
+    grid.code.push_back({Opcode::StepScale, r, r, 0, base + 3, -1, 0});
+    if (endsWithGround(program)) {
+        grid.code.push_back(program.code[program.code.size() - 2]);
+        grid.code.push_back(program.code.back());
+        leaf.count += 2;
+    }
+    grid.outsideLeaf = static_cast<int>(grid.leaves.size());
+    grid.leaves.push_back(leaf);
+}
+
+// How far the grid reaches beyond the root's box. A shadow ray from a surface
+// at distance t, outside the grid, is at least the margin M from the surface
+// and t <= M' + D (D the box's diagonal, M' >= M its distance to the box), so
+// its penumbra term k d / t >= k M / (M + D) >= 1 for M = D / (k - 1): it
+// never darkens anything, and ignoring it there is exact. Negative when no
+// margin makes the shortcut exact (a light softer than that).
+double gridMargin(const program::Program& program) {
+    double diagonal = glm::length(program.rootMax - program.rootMin);
+    double margin = std::max(0.25 * diagonal, 2.0 * program.trace.aoDistance);
+    bool penumbrae = program.trace.shadowMode == sdf::f64::SHADOW_SOFT || program.trace.shadowMode == sdf::f64::SHADOW_IMPROVED;
+    if (penumbrae) {
+        for (const program::LightParams& light : program.lights) {
+            if (!(light.softness > kMinSoftness)) return -1.0;
+            margin = std::max(margin, diagonal / (light.softness - 1.0));
+        }
+    }
+    return margin;
+}
+
+}  // namespace
+
+std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program, int minInstructions) {
+    // the outside bound needs a second point register
+    if (!program.prune || !program.rootBounded || program.pointRegisters < 2 ||
+        static_cast<int>(program.code.size()) < minInstructions) {
+        return nullptr;
+    }
+    double margin = gridMargin(program);
+    if (margin < 0.0) {
+        return nullptr;
+    }
+    // the eye (the origin of march coordinates) inside too: primary rays start in exact cells
+    glm::dvec3 lo = glm::min(program.rootMin - glm::dvec3(margin), glm::dvec3(-2.0 * program.trace.epsilon - 1e-3)),
+               hi = glm::max(program.rootMax + glm::dvec3(margin), glm::dvec3(2.0 * program.trace.epsilon + 1e-3));
+    glm::dvec3 extent = hi - lo;
+    auto grid = std::make_shared<PruneGrid>();
+    grid->cellSize = std::max(extent.x, std::max(extent.y, extent.z)) / kRootCells;
+    grid->dims = glm::max(glm::ivec3(glm::ceil(extent / grid->cellSize)), glm::ivec3(1));
+    grid->origin = lo;
+
+    int roots = grid->dims.x * grid->dims.y * grid->dims.z;
+    std::vector<LocalTree> trees(static_cast<size_t>(roots));
+    CodeSpan full{program.code, program.result};
+    Builder builder(program);
+    tbb::parallel_for(0, roots, [&](int i) {
+        glm::ivec3 cell(i % grid->dims.x, (i / grid->dims.x) % grid->dims.y, i / (grid->dims.x * grid->dims.y));
+        builder.buildRoot(trees[static_cast<size_t>(i)], full, lo + glm::dvec3(cell) * grid->cellSize, grid->cellSize);
+    });
+
+    // merge: root cells first, then every tree's inner nodes
+    grid->nodes.resize(static_cast<size_t>(roots));
+    bool saves = false;
+    for (int i = 0; i < roots; ++i) {
+        LocalTree& tree = trees[static_cast<size_t>(i)];
+        int nodeBase = static_cast<int>(grid->nodes.size()) - 1;  // local node 1 lands at nodes.size()
+        int leafBase = static_cast<int>(grid->leaves.size()), codeBase = static_cast<int>(grid->code.size());
+        auto relocate = [&](int node) { return node >= 0 ? node + leafBase : node - nodeBase; };
+        grid->nodes[static_cast<size_t>(i)] = relocate(tree.nodes[0]);
+        for (size_t n = 1; n < tree.nodes.size(); ++n) grid->nodes.push_back(relocate(tree.nodes[n]));
+        for (PruneLeaf leaf : tree.leaves) {
+            leaf.offset += codeBase;
+            grid->leaves.push_back(leaf);
+            grid->longestLeaf = std::max(grid->longestLeaf, leaf.count);
+            saves = saves || leaf.count < static_cast<int>(program.code.size());
+        }
+        grid->code.insert(grid->code.end(), tree.code.begin(), tree.code.end());
+    }
+    if (!saves) {
+        return nullptr;
+    }
+    addOutsideLeaf(program, *grid);
+    return grid;
+}
+
+namespace {
+
+// What a grid depends on: instructions, parameters, bounds and the switch.
+std::uint64_t gridKey(const program::Program& program) {
+    std::uint64_t hash = program.structureKey();
+    auto mix = [&](const void* data, size_t size) {
+        const unsigned char* bytes = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < size; ++i) {
+            hash ^= bytes[i];
+            hash *= 1099511628211ull;
+        }
+    };
+    mix(program.params.data(), program.params.size() * sizeof(glm::dvec4));
+    mix(&program.rootMin, sizeof(program.rootMin));
+    mix(&program.rootMax, sizeof(program.rootMax));
+    double ao = program.trace.aoDistance;
+    mix(&ao, sizeof(ao));
+    unsigned char flags[2] = {program.rootBounded, program.prune};
+    mix(flags, sizeof(flags));
+    return hash;
+}
+
+}  // namespace
+
+std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program) {
+    // progressive and tiled renders of one program ask for its grid many times
+    static std::mutex mutex;
+    static std::deque<std::pair<std::uint64_t, std::shared_ptr<const PruneGrid>>> cache;
+    constexpr size_t kCached = 4;
+    std::uint64_t key = gridKey(program);
+    {
+        std::lock_guard lock(mutex);
+        for (const auto& entry : cache) {
+            if (entry.first == key) return entry.second;
+        }
+    }
+    std::shared_ptr<const PruneGrid> grid = buildPruneGrid(program);
+    std::lock_guard lock(mutex);
+    cache.emplace_front(key, grid);
+    if (cache.size() > kCached) cache.pop_back();
+    return grid;
+}
+
+}  // namespace sdfwb::prune
