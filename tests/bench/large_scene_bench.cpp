@@ -1,0 +1,128 @@
+// Large scenes (issue 10): per-pixel cost of the CPU backend with and without
+// pruning on the molecule and its subsets, its hard-union variant and
+// generated scenes; the grid's build time and size; the GL backend on the
+// scenes its straight-line shader can still build. Ratios are what to quote
+// (docs/large-scenes.md): run niced, all in one run.
+// Run: nice build/tests/bench/large_scene_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
+
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "cpu/cpu_renderer.h"
+#include "gl/gl_renderer.h"
+#include "glcontext/osmesa_context.h"
+#include "program/compile_scene.h"
+#include "prune/prune_grid.h"
+#include "support/large_scenes.h"
+
+namespace sdfwb {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 90;
+
+struct Case {
+    const char* name;
+    std::function<scene::Scene()> make;
+};
+
+const std::vector<Case>& cases() {
+    static const std::vector<Case> all = {
+        {"molecule_10", [] { return test::moleculeScene("molecule_10"); }},
+        {"molecule_100", [] { return test::moleculeScene("molecule_100"); }},
+        {"molecule_1001", [] { return test::moleculeScene("molecule"); }},
+        {"molecule_hard_10", [] { return test::hardVariant(test::moleculeScene("molecule_10")); }},
+        {"molecule_hard_100", [] { return test::hardVariant(test::moleculeScene("molecule_100")); }},
+        {"molecule_hard_1001", [] { return test::hardVariant(test::moleculeScene("molecule")); }},
+        {"city_10", [] { return test::cityScene(10); }},
+        {"city_100", [] { return test::cityScene(100); }},
+        {"city_1000", [] { return test::cityScene(1000); }},
+        {"capsules_1000", [] { return test::capsuleChainScene(1000); }},
+        {"nested_10", [] { return test::nestedGroupsScene(2, 5); }},
+        {"nested_1000", [] { return test::nestedGroupsScene(64, 16); }},
+    };
+    return all;
+}
+
+program::Program compiled(int index, bool prune) {
+    return program::compileScene(cases()[static_cast<size_t>(index)].make(),
+                                 {.width = kWidth, .height = kHeight, .aa = 1, .prune = prune});
+}
+
+// CPU render time per pixel, the grid built beforehand (a GUI reuses it
+// across progressive passes); range(1) = 1 pruned, 0 the whole program.
+void BM_Cpu(benchmark::State& state) {
+    program::Program p = compiled(static_cast<int>(state.range(0)), state.range(1) != 0);
+    std::shared_ptr<const prune::PruneGrid> grid = prune::pruneGridFor(p);
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(cpu::renderCpu(p));
+    }
+    state.SetLabel(std::string(cases()[static_cast<size_t>(state.range(0))].name) + (state.range(1) ? " pruned" : " whole") +
+                   " " + std::to_string(p.code.size()) + " instructions");
+    state.counters["us_per_px"] = benchmark::Counter(1e6 / (kWidth * kHeight), benchmark::Counter::kIsIterationInvariantRate |
+                                                                                  benchmark::Counter::kInvert);
+}
+
+void BM_GridBuild(benchmark::State& state) {
+    program::Program p = compiled(static_cast<int>(state.range(0)), true);
+    std::shared_ptr<const prune::PruneGrid> grid;
+    for (auto _ : state) {
+        grid = prune::buildPruneGrid(p);
+    }
+    state.SetLabel(cases()[static_cast<size_t>(state.range(0))].name);
+    if (grid) {
+        state.counters["leaves"] = static_cast<double>(grid->leaves.size());
+        state.counters["stored_instr"] = static_cast<double>(grid->code.size());
+        state.counters["longest_leaf"] = grid->longestLeaf;
+        state.counters["mean_leaf"] = static_cast<double>(grid->code.size()) / static_cast<double>(grid->leaves.size());
+        state.counters["MB"] = static_cast<double>(grid->code.size() * sizeof(program::Instruction) +
+                                                   grid->nodes.size() * sizeof(int) +
+                                                   grid->leaves.size() * sizeof(prune::PruneLeaf)) / 1e6;
+    }
+}
+
+glcontext::OsMesaContext& context() {
+    static auto c = glcontext::OsMesaContext::create();
+    return *c;
+}
+
+// GL: build (generation, compile, link) and render time per pixel.
+void BM_Gl(benchmark::State& state) {
+    program::Program p = compiled(static_cast<int>(state.range(0)), true);
+    gl::GlRenderer renderer(context().gl());
+    renderer.prepare(p);
+    double compile = renderer.counters().lastCompileSeconds;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(renderer.render(p));
+    }
+    state.SetLabel(cases()[static_cast<size_t>(state.range(0))].name);
+    state.counters["build_s"] = compile;
+    state.counters["us_per_px"] = benchmark::Counter(1e6 / (kWidth * kHeight), benchmark::Counter::kIsIterationInvariantRate |
+                                                                                  benchmark::Counter::kInvert);
+}
+
+void cpuArgs(benchmark::internal::Benchmark* b) {
+    for (int i = 0; i < static_cast<int>(cases().size()); ++i) {
+        b->Args({i, 1});
+        b->Args({i, 0});
+    }
+}
+BENCHMARK(BM_Cpu)->Apply(cpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_GridBuild)->DenseRange(0, 11)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+// the straight-line shader: 10 and 100 spheres only (1001 does not build in minutes)
+BENCHMARK(BM_Gl)->Arg(0)->Arg(1)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+}  // namespace
+}  // namespace sdfwb
+
+int main(int argc, char** argv) {
+    setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
