@@ -63,8 +63,8 @@ void BM_Cpu(benchmark::State& state) {
     }
     state.SetLabel(std::string(cases()[static_cast<size_t>(state.range(0))].name) + (state.range(1) ? " pruned" : " whole") +
                    " " + std::to_string(p.code.size()) + " instructions");
-    state.counters["us_per_px"] = benchmark::Counter(1e6 / (kWidth * kHeight), benchmark::Counter::kIsIterationInvariantRate |
-                                                                                  benchmark::Counter::kInvert);
+    state.counters["s_per_px"] = benchmark::Counter(kWidth * kHeight, benchmark::Counter::kIsIterationInvariantRate |
+                                                                          benchmark::Counter::kInvert);
 }
 
 void BM_GridBuild(benchmark::State& state) {
@@ -101,8 +101,8 @@ void BM_Gl(benchmark::State& state) {
     }
     state.SetLabel(cases()[static_cast<size_t>(state.range(0))].name);
     state.counters["build_s"] = compile;
-    state.counters["us_per_px"] = benchmark::Counter(1e6 / (kWidth * kHeight), benchmark::Counter::kIsIterationInvariantRate |
-                                                                                  benchmark::Counter::kInvert);
+    state.counters["s_per_px"] = benchmark::Counter(kWidth * kHeight, benchmark::Counter::kIsIterationInvariantRate |
+                                                                          benchmark::Counter::kInvert);
 }
 
 void cpuArgs(benchmark::internal::Benchmark* b) {
