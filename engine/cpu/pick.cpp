@@ -5,6 +5,7 @@
 
 #include "cpu/cpu_renderer.h"
 #include "expr/tape.h"
+#include "prune/prune_grid.h"
 #include "scene/camera_frame.h"
 #include "sdf/shared.h"
 
