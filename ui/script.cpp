@@ -4,10 +4,12 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "scene/node_kinds.h"
 #include "ui/placement.h"
 #include "ui/view_camera.h"
+#include "ui/view_picking.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -37,6 +39,7 @@ constexpr CommandSpec kCommands[] = {
     {"panel", 1, 1, "panel node|materials|lights|render|environment|library"},
     {"camera", 3, 3, "camera <azimuth> <elevation> <distance>"},
     {"orbit", 2, 2, "orbit <azimuth step> <elevation step>"},
+    {"pick", 2, 2, "pick <x> <y>"},
     {"view", 1, 1, "view front|back|right|left|top|bottom|all|selected"},
     {"wait", 1, 1, "wait <frames>|idle"},
     {"screenshot", 1, 1, "screenshot <file.png>"},
@@ -281,6 +284,19 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         camera.elevation = v[1];
         camera.distance = v[2];
         return done(editor.setView(camera));
+    }
+    if (c.name == "pick") {
+        double v[2];
+        for (int i = 0; i < 2; ++i) {
+            if (!parseNumber(a[static_cast<size_t>(i)], v[i]) || v[i] < 0 || v[i] > 1) {
+                return fail(c, "\"" + a[static_cast<size_t>(i)] + "\" is not a fraction of the view from 0 to 1");
+            }
+        }
+        auto [width, height] = host.viewSize();
+        if (width <= 0 || height <= 0) std::tie(width, height) = std::pair{editor.scene().render.width, editor.scene().render.height};
+        selectPicked(editor, pickView(editor.scene(), width, height, v[0] * width, v[1] * height));
+        ui.showTab = InspectorTab::Node;
+        return done();
     }
     if (c.name == "orbit") {
         double v[2];

@@ -45,6 +45,9 @@ public:
     virtual void quit() = 0;
     // The polynomial panel the `polynomial` commands drive.
     virtual PolynomialPanelState& polynomialPanel() = 0;
+    // The viewport's image size in pixels ({0, 0}: none; `pick` then uses the
+    // scene's render size).
+    virtual std::pair<int, int> viewSize() const { return {0, 0}; }
 };
 
 enum class ScriptStatus { Running, Finished, Failed };

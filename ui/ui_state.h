@@ -30,6 +30,7 @@ struct UiState {
     bool showStats = true;       // statistics overlay on the viewport
     bool stepHeat = false;       // show the step-count heat image instead of colour
     bool showThumbnails = true;  // per-node thumbnails in the scene tree
+    bool pixelReadout = true;    // distance, steps and node under the cursor, over the viewport
     // A tab to bring to the front on the next frame (scripts), then cleared.
     std::optional<InspectorTab> showTab;
 

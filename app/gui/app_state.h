@@ -14,6 +14,7 @@
 #include "app/gui/glfw_context.h"
 #include "app/gui/snapshot_export.h"
 #include "app/gui/thumbnails.h"
+#include "app/gui/view_selection.h"
 #include "app/gui/viewport.h"
 #include "tradeoff/measurements.h"
 #include "ui/polynomial_panel.h"
@@ -74,6 +75,7 @@ struct AppState {
     SnapshotExport snapshot;
     FileState files;
     ViewRequest view;
+    PixelReadout readout;  // the viewport's pixel under the cursor
     std::vector<KeyPress> keyPresses;  // since the last frame
     std::uint64_t lastRevision = 0;    // the editor's revision seen last frame
     double lastChange = 0;             // glfwGetTime() when it last changed

@@ -60,6 +60,7 @@ public:
     std::string open(const std::filesystem::path& path) override { return openScene(app_, path); }
     void quit() override { app_.quit = true; }
     ui::PolynomialPanelState& polynomialPanel() override { return app_.polynomial; }
+    std::pair<int, int> viewSize() const override { return {app_.view.width, app_.view.height}; }
 
 private:
     AppState& app_;

@@ -145,6 +145,7 @@ void menuBar(AppState& app) {
         ImGui::MenuItem("Step heat view", "H", &app.ui.stepHeat);
         ImGui::MenuItem("Statistics overlay", nullptr, &app.ui.showStats);
         ImGui::MenuItem("Node thumbnails", nullptr, &app.ui.showThumbnails);
+        ImGui::MenuItem("Pixel readout", nullptr, &app.ui.pixelReadout);
         ImGui::MenuItem("Polynomial (implicitize)", nullptr, &app.polynomial.open);
         ImGui::Separator();
         if (ImGui::MenuItem("Frame all", "Home, F")) frameAll(app);

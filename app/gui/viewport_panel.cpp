@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/gui/view_selection.h"
 #include "ui/view_camera.h"
 
 namespace sdfwb::app::gui {
@@ -168,6 +169,7 @@ void drawViewportPanel(AppState& app) {
     }
     ImGui::SetCursorScreenPos(corner);
     bool dragging = cameraControls(app, size);
+    if (app.ui.compare == ui::CompareMode::Off) viewSelection(app, corner, size);
     viewHint(app, corner, size);
     // A slider drag counts as interaction while it keeps changing the scene
     // (not, say, while a tree row is dragged): render the quick preview then.

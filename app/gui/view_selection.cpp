@@ -1,0 +1,83 @@
+#include "app/gui/view_selection.h"
+
+#include <cmath>
+
+#include "app/gui/app_state.h"
+#include "ui/node_path.h"
+#include "ui/view_picking.h"
+
+namespace sdfwb::app::gui {
+namespace {
+
+constexpr float kClickSlop = 3.0f;  // pixels a click may move and still not be a drag
+constexpr ImU32 kOutline = IM_COL32(255, 190, 60, 255);
+
+// The image pixel (framebuffer pixels from the top left) under a screen point.
+ImVec2 imagePixel(const AppState& app, ImVec2 corner, ImVec2 size, ImVec2 screen) {
+    return ImVec2((screen.x - corner.x) / size.x * static_cast<float>(app.view.width),
+                  (screen.y - corner.y) / size.y * static_cast<float>(app.view.height));
+}
+
+void outline(const AppState& app, ImVec2 corner, ImVec2 size) {
+    if (!app.editor.selection()) return;
+    std::optional<ui::ImageRect> rect =
+        ui::outlineRect(app.editor.scene(), *app.editor.selection(), app.view.width, app.view.height);
+    if (!rect) return;
+    auto screen = [&](glm::dvec2 p) {
+        return ImVec2(corner.x + static_cast<float>(p.x) / static_cast<float>(app.view.width) * size.x,
+                      corner.y + static_cast<float>(p.y) / static_cast<float>(app.view.height) * size.y);
+    };
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(corner, ImVec2(corner.x + size.x, corner.y + size.y), true);
+    ImVec2 a = screen(rect->min), b = screen(rect->max);
+    draw->AddRect(ImVec2(a.x - 3, a.y - 3), ImVec2(b.x + 3, b.y + 3), IM_COL32(0, 0, 0, 140), 0, 0, 4.0f);
+    draw->AddRect(ImVec2(a.x - 3, a.y - 3), ImVec2(b.x + 3, b.y + 3), kOutline, 0, 0, 2.0f);
+    draw->PopClipRect();
+}
+
+void readout(AppState& app, ImVec2 corner, ImVec2 size) {
+    ImVec2 mouse = ImGui::GetIO().MousePos;
+    PixelReadout& r = app.readout;
+    if (mouse.x != r.mouse.x || mouse.y != r.mouse.y || r.revision != app.editor.revision()) {
+        ImVec2 pixel = imagePixel(app, corner, size, mouse);
+        r.pick = ui::pickView(app.editor.scene(), app.view.width, app.view.height, pixel.x, pixel.y);
+        r.mouse = mouse;
+        r.revision = app.editor.revision();
+    }
+    if (!r.pick) return;
+    const cpu::PickResult& p = *r.pick;
+    std::string text = "steps " + std::to_string(p.steps) + "   ";
+    if (!p.hit) {
+        text += "no hit";
+    } else {
+        char numbers[96];
+        std::snprintf(numbers, sizeof numbers, "distance %.4g at (%.3f, %.3f, %.3f)   ", p.distance, p.position.x,
+                      p.position.y, p.position.z);
+        text += numbers;
+        text += p.ground ? std::string("ground") : p.node ? ui::formatNodePath(*p.node) : std::string("?");
+    }
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    ImVec2 at(corner.x + 8, corner.y + size.y - ImGui::GetTextLineHeight() - 8);
+    ImVec2 extent = ImGui::CalcTextSize(text.c_str());
+    draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3),
+                        IM_COL32(20, 22, 26, 190), 3);
+    draw->AddText(at, IM_COL32(230, 232, 236, 255), text.c_str());
+}
+
+}  // namespace
+
+void viewSelection(AppState& app, ImVec2 corner, ImVec2 size) {
+    if (app.view.width <= 0 || app.view.height <= 0) return;
+    if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+        ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
+        if (std::hypot(drag.x, drag.y) < kClickSlop) {
+            ImVec2 pixel = imagePixel(app, corner, size, ImGui::GetIO().MousePos);
+            ui::selectPicked(app.editor, ui::pickView(app.editor.scene(), app.view.width, app.view.height, pixel.x, pixel.y));
+            app.ui.showTab = ui::InspectorTab::Node;
+        }
+    }
+    outline(app, corner, size);
+    if (app.ui.pixelReadout && ImGui::IsItemHovered() && !ImGui::IsItemActive()) readout(app, corner, size);
+}
+
+}  // namespace sdfwb::app::gui
