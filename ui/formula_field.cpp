@@ -68,6 +68,9 @@ void drawAddFormulaMenu(Editor& editor, UiState& ui, const scene::KindSpec& kind
     std::string label = "##formula " + name;
     bool entered = ImGui::InputText(label.c_str(), &draft->second, ImGuiInputTextFlags_EnterReturnsTrue);
     std::string reason = scene::checkField(*formulaField(kind), draft->second);
+    // Enter on a formula that cannot be added leaves the box in ImGui 1.86:
+    // take the keyboard back, or the next keys reach the global shortcuts
+    if (entered && !reason.empty()) ImGui::SetKeyboardFocusHere(-1);
     problemText(reason);
     ImGui::BeginDisabled(!reason.empty());
     bool pressed = ImGui::Button(("Add " + name).c_str());

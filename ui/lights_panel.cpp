@@ -14,6 +14,17 @@
 namespace sdfwb::ui {
 namespace {
 
+// A light added to a lit scene: a soft fill from the other side at a third of
+// white, so the scene is not blown out (the scene format's default light is a
+// full-strength key light).
+scene::Light newLight() {
+    scene::Light light;
+    light.direction = glm::dvec3(-0.5, 0.6, -0.4);
+    light.color = glm::dvec3(0.35);
+    light.softness = 6.0;
+    return light;
+}
+
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
 // Azimuth about +y from +z towards +x, elevation above the horizon, degrees.
@@ -65,7 +76,7 @@ void drawLightsPanel(Editor& editor, UiState& ui) {
     const size_t count = editor.scene().lights.size();
     ImGui::BeginDisabled(count >= static_cast<size_t>(scene::kMaxLights));
     if (ImGui::Button("Add light")) {
-        reportProblems(ui, editor.apply("Add light", [](scene::Scene& s) { s.lights.push_back({}); }));
+        reportProblems(ui, editor.apply("Add light", [](scene::Scene& s) { s.lights.push_back(newLight()); }));
     }
     ImGui::EndDisabled();
     ImGui::SameLine();

@@ -115,6 +115,7 @@ void drawNode(TreeContext& tree, const scene::Node& node, NodePath& path) {
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) {
         tree.editor.select(path);
         tree.ui.inspectorProblems.clear();
+        tree.ui.showTab = InspectorTab::Node;  // what was selected is what the user wants to see
     }
     if (!path.empty() && ImGui::BeginDragDropSource()) {
         ImGui::SetDragDropPayload(kDragType, path.data(), path.size() * sizeof(int));

@@ -167,8 +167,15 @@ void drawUnsavedPrompt(AppState& app) {
 
 void drawRestorePrompt(AppState& app) {
     if (app.files.offerRestore && !ImGui::IsPopupOpen("Restore unsaved work?")) ImGui::OpenPopup("Restore unsaved work?");
+    // centred and no larger than the window, whatever its size now
+    const ImGuiViewport* screen = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(screen->WorkPos.x + screen->WorkSize.x * 0.5f, screen->WorkPos.y + screen->WorkSize.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(screen->WorkSize.x - 16, screen->WorkSize.y - 16));
     if (!ImGui::BeginPopupModal("Restore unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::Text("A previous session ended with unsaved changes.\nRestore them from %s?", autosavePath().c_str());
+    ImGui::PushTextWrapPos(std::min(screen->WorkSize.x - 48, 560.0f));
+    ImGui::TextWrapped("A previous session ended with unsaved changes. Restore them from %s?", autosavePath().c_str());
+    ImGui::PopTextWrapPos();
     bool close = false;
     if (ImGui::Button("Restore")) {
         try {

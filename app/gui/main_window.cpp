@@ -274,7 +274,7 @@ void snapshotDialog(AppState& app) {
     SnapshotSettings& s = snapshot.settings;
     ImGui::BeginDisabled(snapshot.running());
     ImGui::SetNextItemWidth(360);
-    ImGui::InputText("file (.png or .exr)", &s.path);
+    ImGui::InputText("file (.png, .jpg, .tif or .exr)", &s.path);
     ImGui::SetNextItemWidth(200);
     ImGui::InputInt2("size", &s.width);
     ImGui::SetNextItemWidth(200);
