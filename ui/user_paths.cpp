@@ -27,7 +27,8 @@ std::vector<std::string> loadRecentFiles() {
     std::vector<std::string> files;
     std::ifstream in(configDirectory() / "recent.txt");
     for (std::string line; std::getline(in, line) && files.size() < kRecentFiles;) {
-        if (!line.empty()) files.push_back(line);
+        // a file moved or deleted since leaves the list
+        if (!line.empty() && std::filesystem::exists(line)) files.push_back(line);
     }
     return files;
 }

@@ -13,7 +13,8 @@ namespace sdfwb::ui {
 std::filesystem::path configDirectory();
 std::filesystem::path stateDirectory();
 
-// Recent scene files, newest first, at most 8; kept in configDirectory()/recent.txt.
+// Recent scene files, newest first, at most 8, those that still exist; kept in
+// configDirectory()/recent.txt.
 std::vector<std::string> loadRecentFiles();
 // Moves `path` to the front and saves the list; errors are ignored (a recent
 // list is a convenience, never a reason to fail a save).

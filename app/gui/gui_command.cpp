@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 #include <imgui.h>
@@ -20,6 +21,7 @@
 #include "app/scene_source.h"
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
+#include "ui/user_paths.h"
 
 namespace sdfwb::app::gui {
 
@@ -175,6 +177,10 @@ int runGui(const GuiArguments& arguments) {
     std::optional<ui::ScriptRunner> script;
     try {
         scene = loadSceneArgument(arguments.scene);
+        // a file opened from the command line is a recent file like one opened
+        // in the window (scripted runs leave the user's list alone)
+        bool scripted = !arguments.script.empty() || !arguments.screenshot.empty();
+        if (!scripted && std::filesystem::is_regular_file(arguments.scene)) ui::rememberRecentFile(arguments.scene);
         if (!arguments.script.empty()) {
             script.emplace(ui::parseScript(io::readTextFile(arguments.script), arguments.script), arguments.script);
         } else if (!arguments.screenshot.empty()) {
