@@ -82,9 +82,10 @@ double contrast(const image::Image& shot) {
 constexpr const char* kScript = R"(# GUI smoke test: edit, switch backend, undo, save
 # AA 1 keeps the CPU backend's renders short on a shared CI machine
 set render.aa 1
+# selected first: the selection outline is in every screenshot compared
+select root.children[0].children[0]
 wait idle
 screenshot before.png
-select root.children[0].children[0]
 set radius 0.4
 screenshot edited.png
 backend cpu
