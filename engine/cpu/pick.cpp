@@ -67,7 +67,7 @@ int decidingShape(const program::Program& program, const f32::Kernel& kernel, f3
     int nextShape = 0;
     for (const Instruction& in : program.code) {
         program::OpClass opClass = program::opcodeInfo(in.op).opClass;
-        bool combine = opClass == program::OpClass::Combine;
+        bool combine = opClass == program::OpClass::Combine || opClass == program::OpClass::SmoothCombine;
         float a = combine ? scratch.samples[static_cast<size_t>(in.a)].d : 0.0f;
         float b = combine ? scratch.samples[static_cast<size_t>(in.b)].d : 0.0f;
         single.code[0] = in;
@@ -76,8 +76,12 @@ int decidingShape(const program::Program& program, const f32::Kernel& kernel, f3
         auto dst = static_cast<size_t>(in.dst);
         switch (opClass) {
         case program::OpClass::Point: break;
-        case program::OpClass::Shape: source[dst] = in.op == Opcode::Ground ? kGround : nextShape++; break;
+        case program::OpClass::Shape:
+        case program::OpClass::ShapeSample:
+        case program::OpClass::FormulaShape:
+        case program::OpClass::FormulaSample: source[dst] = in.op == Opcode::Ground ? kGround : nextShape++; break;
         case program::OpClass::Combine:
+        case program::OpClass::SmoothCombine:
             source[dst] = resultFromFirst(in.op, a, b) ? source[static_cast<size_t>(in.a)] : source[static_cast<size_t>(in.b)];
             break;
         case program::OpClass::Post: source[dst] = source[static_cast<size_t>(in.a)]; break;
@@ -91,7 +95,10 @@ std::optional<std::vector<int>> pathOfShape(const scene::Scene& scene, const pro
     if (shape < 0) return std::nullopt;
     std::vector<std::vector<int>> paths = primitivePaths(scene.root);
     auto shapes = std::count_if(program.code.begin(), program.code.end(), [](const Instruction& in) {
-        return program::opcodeInfo(in.op).opClass == program::OpClass::Shape && in.op != Opcode::Ground;
+        program::OpClass c = program::opcodeInfo(in.op).opClass;
+        bool shape = c == program::OpClass::Shape || c == program::OpClass::ShapeSample ||
+                     c == program::OpClass::FormulaShape || c == program::OpClass::FormulaSample;
+        return shape && in.op != Opcode::Ground;
     });
     // a compiler that skipped or repeated a primitive would misname every pick
     if (static_cast<size_t>(shapes) != paths.size() || static_cast<size_t>(shape) >= paths.size()) return std::nullopt;
