@@ -65,11 +65,15 @@ TEST(AddFormula, ValidFormulaBecomesANewNodeInOneUndoStep) {
     Editor editor(start);
     const scene::KindSpec& implicit = scene::kindSpec(scene::NodeKind::Implicit);
     ASSERT_EQ(addFormulaNode(editor, implicit, "x^4 + y^4 + z^4 - 1"), Problems{});
+    // New nodes are placed where the view looks: inside a translate, the node itself selected.
     ASSERT_EQ(editor.scene().root.children.size(), 1u);
-    const scene::Node& node = editor.scene().root.children[0];
+    const scene::Node& placed = editor.scene().root.children[0];
+    EXPECT_EQ(placed.kind, scene::NodeKind::Translate);
+    ASSERT_EQ(placed.children.size(), 1u);
+    const scene::Node& node = placed.children[0];
     EXPECT_EQ(node.kind, scene::NodeKind::Implicit);
     EXPECT_EQ(node.text("formula"), "x^4 + y^4 + z^4 - 1");
-    EXPECT_EQ(editor.selection(), NodePath{0});
+    EXPECT_EQ(editor.selection(), (NodePath{0, 0}));
     ASSERT_TRUE(editor.undo());
     EXPECT_TRUE(editor.scene().root.children.empty());
 }
