@@ -46,6 +46,8 @@ int runParity(const ParityArguments& a) {
         for (const auto& file : files) {
             scene::Scene scene = scene::loadSceneFile(file);
             parity::ParityOptions options{.width = width, .height = height, .aa = a.aa, .reference = isHardCase(file)};
+            std::optional<scene::Scene> intended = options.reference ? parity::loadIntendedScene(file) : std::nullopt;
+            options.intended = intended ? &*intended : nullptr;
             parity::ParityResult result = parity::measureParity(scene, *cpu, *gl, options);
             std::string name = std::filesystem::relative(file).string();
             std::string row = parity::tableRow(name, result, anyHard);

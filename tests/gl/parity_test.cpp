@@ -25,13 +25,16 @@ TEST_P(Parity, BackendsAgree) {
     cpu::CpuBackend cpu;
     gl::GlBackend glBackend(context());
     parity::ParityOptions options{.width = 320, .height = 180, .aa = 2, .reference = file.isHardCase()};
+    std::optional<scene::Scene> intended = options.reference ? parity::loadIntendedScene(file.path()) : std::nullopt;
+    options.intended = intended ? &*intended : nullptr;
     parity::ParityResult r = parity::measureParity(s, cpu, glBackend, options);
     std::cout << parity::tableHeader(options.reference) << parity::tableRow(file.relative, r, options.reference);
     EXPECT_EQ(r.cpuNonFinite, 0u);
     EXPECT_EQ(r.glNonFinite, 0u);
     if (options.reference) {
         EXPECT_TRUE(r.passesHardGate) << "hard-case gate failed";
-    } else {
+    }
+    {
         const image::ParityThresholds& t = image::kParityThresholds;
         EXPECT_LE(r.glVsCpu.percentAbove(t.failLevel), t.failPercent);
         EXPECT_LE(r.glVsCpu.maxAbs, t.hardFailLevel);
