@@ -118,6 +118,40 @@ TEST(SmoothBooleans, WeightIsTheDerivativeWithRespectToTheSecondOperand) {
     }
 }
 
+// The float build against the double build on the same (float) operands,
+// magnitudes 1e-6 to 1e10 of both signs: no form may cancel when one operand is
+// huge (an empty group's 1e10, a far child, the ground far below). The error
+// allowed is a few float ulps of the result, the smaller operand and k.
+TEST(SmoothBooleans, FloatMatchesDoubleForOperandsFrom1eMinus6To1e10) {
+    const double magnitudes[] = {1e-6, 1e-3, 0.05, 0.5, 1, 3, 1e3, 1e6, 1e10};
+    std::vector<float> operands;
+    for (double m : magnitudes) {
+        operands.push_back(static_cast<float>(m));
+        operands.push_back(static_cast<float>(-m));
+    }
+    for (int variant : kVariants) {
+        for (float k : {1e-3f, 0.1f, 0.5f, 2.0f}) {
+            for (float n : {2.0f, 3.0f}) {
+                for (float a : operands) {
+                    for (float b : operands) {
+                        f32::Blend single = f32::smoothMin(variant, a, b, k, n);
+                        f32::Blend singleMax = f32::smoothMax(variant, a, b, k, n);
+                        Blend exact = smoothMin(variant, a, b, k, n);
+                        Blend exactMax = smoothMax(variant, a, b, k, n);
+                        const double scale = std::min(std::abs(a), std::abs(b)) + k;
+                        EXPECT_NEAR(single.d, exact.d, 1e-6 * (std::abs(exact.d) + scale))
+                            << "variant " << variant << " k=" << k << " a=" << a << " b=" << b;
+                        EXPECT_NEAR(singleMax.d, exactMax.d, 1e-6 * (std::abs(exactMax.d) + scale))
+                            << "max, variant " << variant << " k=" << k << " a=" << a << " b=" << b;
+                        // (the power variant's weight raises d / b to the power 1 + 1/k: 3e-5 off at k = 1e-3)
+                        EXPECT_NEAR(single.w, exact.w, 1e-4) << "variant " << variant << " a=" << a << " b=" << b;
+                    }
+                }
+            }
+        }
+    }
+}
+
 TEST(SmoothBooleans, MaxIsMinusMinOfNegatives) {
     for (int variant : kVariants) {
         for (auto [a, b] : operandPairs()) {
