@@ -12,6 +12,21 @@ std::string returnType(std::size_t outputs) {
   return "vec" + std::to_string(outputs);
 }
 
+// The transcendental built-ins come from the shared library
+// (sdf/glsl/transcendental.glsl), as in the float evaluator: llvmpipe's own
+// differ from the C library's in the last bits.
+std::string_view glslFunctionName(Op op) {
+  switch (op) {
+    case Op::Sin: return "formulaSin";
+    case Op::Cos: return "formulaCos";
+    case Op::Tan: return "formulaTan";
+    case Op::Exp: return "formulaExp";
+    case Op::Log: return "formulaLog";
+    case Op::Pow: return "formulaPow";
+    default: return opInfo(op).name;
+  }
+}
+
 }  // namespace
 
 std::string glslFloatLiteral(double value) {
@@ -55,7 +70,7 @@ std::string emitGlslBody(const Tape& tape, const std::vector<std::string>& varia
         break;
       default: {
         const int arity = opInfo(in.op).arity;
-        value = std::string(opInfo(in.op).name) + "(" + a + (arity == 2 ? ", " + b : "") + ")";
+        value = std::string(glslFunctionName(in.op)) + "(" + a + (arity == 2 ? ", " + b : "") + ")";
         break;
       }
     }

@@ -1,9 +1,10 @@
 #pragma once
 // GLSL generation from a tape: GLSL 3.30 core built-ins only, one statement
 // per instruction in the tape's order, so the shader rounds exactly the
-// operations the CPU evaluator rounds: bit-identical on llvmpipe for
-// + - * / sqrt abs floor min max and selects (sin, cos, exp, log, pow and tan
-// are llvmpipe approximations, within about 1e-6 relative).
+// operations the CPU evaluator rounds: bit-identical on llvmpipe for every
+// built-in. sin, cos, tan, exp, log and pow call the shared library's
+// formulaSin ... formulaPow (sdf/glsl/transcendental.glsl), as the float
+// evaluator does, so the shader must include sdf::glslLibrary().
 //
 // Bit-exactness needs one thing from the caller: declare the fragment output
 // that depends on these functions `invariant` (`invariant evalResult;`, plain

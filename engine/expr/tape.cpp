@@ -4,7 +4,30 @@
 
 #include <cassert>
 
+#include "sdf/shared.h"
+
 namespace sdfwb::expr {
+namespace {
+
+// In float, the shared library's transcendental functions, which the generated
+// GLSL calls too (sdf/glsl/transcendental.glsl): both backends then agree bit for
+// bit. In double, the C library's, as the reference.
+struct Transcendentals {
+  static float sin(float a) { return sdf::f32::formulaSin(a); }
+  static float cos(float a) { return sdf::f32::formulaCos(a); }
+  static float tan(float a) { return sdf::f32::formulaTan(a); }
+  static float exp(float a) { return sdf::f32::formulaExp(a); }
+  static float log(float a) { return sdf::f32::formulaLog(a); }
+  static float pow(float a, float b) { return sdf::f32::formulaPow(a, b); }
+  static double sin(double a) { return glm::sin(a); }
+  static double cos(double a) { return glm::cos(a); }
+  static double tan(double a) { return glm::tan(a); }
+  static double exp(double a) { return glm::exp(a); }
+  static double log(double a) { return glm::log(a); }
+  static double pow(double a, double b) { return glm::pow(a, b); }
+};
+
+}  // namespace
 
 Tape::Tape(const Graph& graph, std::span<const NodeId> outputs) : variables_(graph.variables()) {
   std::vector<bool> live(graph.size(), false);
@@ -46,17 +69,17 @@ void Tape::run(std::span<const T> variables, std::span<T> slots) const {
       case Op::Sub: r = a - b; break;
       case Op::Mul: r = a * b; break;
       case Op::Div: r = a / b; break;
-      case Op::Sin: r = glm::sin(a); break;
-      case Op::Cos: r = glm::cos(a); break;
-      case Op::Tan: r = glm::tan(a); break;
-      case Op::Exp: r = glm::exp(a); break;
-      case Op::Log: r = glm::log(a); break;
+      case Op::Sin: r = Transcendentals::sin(a); break;
+      case Op::Cos: r = Transcendentals::cos(a); break;
+      case Op::Tan: r = Transcendentals::tan(a); break;
+      case Op::Exp: r = Transcendentals::exp(a); break;
+      case Op::Log: r = Transcendentals::log(a); break;
       case Op::Sqrt: r = glm::sqrt(a); break;
       case Op::Abs: r = glm::abs(a); break;
       case Op::Floor: r = glm::floor(a); break;
       case Op::Min: r = glm::min(a, b); break;
       case Op::Max: r = glm::max(a, b); break;
-      case Op::Pow: r = glm::pow(a, b); break;
+      case Op::Pow: r = Transcendentals::pow(a, b); break;
       case Op::SelectLess: r = a < b ? slots[in.args[2]] : slots[in.args[3]]; break;
       case Op::SelectEqual: r = a == b ? slots[in.args[2]] : slots[in.args[3]]; break;
     }

@@ -8,8 +8,8 @@ namespace sdfwb::sdf {
 // GLSL 3.30 prelude that makes the shared subset compile: `real`, SHARED_FN.
 std::string_view glslPrelude();
 
-// The shared sources in dependency order (math, primitives, operators, material,
-// camera, instructions, tracer), concatenated.
+// The shared sources in dependency order (math, transcendental, primitives,
+// operators, material, camera, instructions, tracer), concatenated.
 std::string_view glslLibrary();
 
 }  // namespace sdfwb::sdf

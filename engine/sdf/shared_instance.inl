@@ -11,7 +11,9 @@ using glm::abs;
 using glm::clamp;
 using glm::cos;
 using glm::exp2;
+using glm::floatBitsToInt;
 using glm::floor;
+using glm::intBitsToFloat;
 using glm::inversesqrt;
 using glm::log2;
 using glm::max;
@@ -20,6 +22,7 @@ using glm::sin;
 using std::sqrt;
 
 #include "sdf/glsl/math.glsl"
+#include "sdf/glsl/transcendental.glsl"
 #include "sdf/glsl/primitives.glsl"
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"

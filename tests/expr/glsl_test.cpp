@@ -84,10 +84,10 @@ TEST(Glsl, GuardsAndPowers) {
   float t0 = max(p.x, 0.0);
   float t1 = sqrt(t0);
   float t2 = max(p.y, 1.17549435e-38);
-  float t3 = log(t2);
+  float t3 = formulaLog(t2);
   float t4 = t1 + t3;
   float t5 = max(p.z, 1.17549435e-38);
-  float t6 = pow(t5, 0.100000001);
+  float t6 = formulaPow(t5, 0.100000001);
   float t7 = t4 + t6;
   float t8 = p.x / p.y;
   float t9 = floor(t8);

@@ -65,6 +65,8 @@ protected:
         // the evaluator rejects inputs the shader does not read, so pass b only when used
         bool usesB = std::regex_search(glslBody, std::regex("\\bb\\b"));
         std::string source = std::string(sdf::glslPrelude()) + std::string(sdf::glslLibrary()) +
+                             // as the renderer's outputs: Mesa then rounds every operation as written
+                             "invariant evalResult;\n"
                              "uniform samplerBuffer inA;\nuniform samplerBuffer inB;\n"
                              "void main() {\n  vec4 a = texelFetch(inA, evalIndex());\n"
                              "  vec4 b = texelFetch(inB, evalIndex());\n  evalResult = " +
@@ -206,6 +208,32 @@ TEST_F(SharedLibraryOnGl, BooleansWithoutTranscendentalsAgreeBitForBit) {
                           return vec4(sminPolynomial(a.x, b.x, 0.5f, 2.0f).d, sminPolynomial(a.y, b.y, 0.5f, 3.0f).w,
                                       sminRoot(a.z, b.z, 0.4f).d, smoothMax(SMOOTH_ROOT, a.w, b.w, 0.4f, 2.0f).w);
                       }),
+              0);
+}
+
+// The formula language's transcendental built-ins (sdf/glsl/transcendental.glsl):
+// built from + - * / floor and bit casts, bit for bit, over wide ranges (the
+// special values 0 and +-0.5 included by makeInputs).
+TEST_F(SharedLibraryOnGl, FormulaTranscendentalsAgreeBitForBit) {
+    EXPECT_EQ(maxUlps("vec4(formulaSin(a.x), formulaCos(a.y), formulaTan(a.z), formulaSin(a.w * b.w))",
+                      [](vec4 a, vec4 b) {
+                          return vec4(formulaSin(a.x), formulaCos(a.y), formulaTan(a.z), formulaSin(a.w * b.w));
+                      },
+                      60.0f),
+              0);
+    EXPECT_EQ(maxUlps("vec4(formulaExp(a.x), formulaLog(abs(a.y)), formulaLog(abs(a.z) * b.z * b.z), formulaExp(a.w * b.w))",
+                      [](vec4 a, vec4 b) {
+                          return vec4(formulaExp(a.x), formulaLog(std::abs(a.y)), formulaLog(std::abs(a.z) * b.z * b.z),
+                                      formulaExp(a.w * b.w));
+                      },
+                      12.0f, 2),
+              0);
+    EXPECT_EQ(maxUlps("vec4(formulaPow(abs(a.x), b.x), formulaPow(abs(a.y) + 0.001, b.y * 0.25), formulaCos(a.z * 1000.0), formulaLog(abs(a.w) + 1.0))",
+                      [](vec4 a, vec4 b) {
+                          return vec4(formulaPow(std::abs(a.x), b.x), formulaPow(std::abs(a.y) + 0.001f, b.y * 0.25f),
+                                      formulaCos(a.z * 1000.0f), formulaLog(std::abs(a.w) + 1.0f));
+                      },
+                      8.0f, 3),
               0);
 }
 
