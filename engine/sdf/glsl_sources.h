@@ -5,7 +5,8 @@
 
 namespace sdfwb::sdf {
 
-// GLSL 3.30 prelude that makes the shared subset compile: `real`, SHARED_FN.
+// GLSL 3.30 prelude that makes the shared subset compile: `real`, SHARED_FN,
+// and the library's sin and cos (librarySin, libraryCos: see shared_instance.inl).
 std::string_view glslPrelude();
 
 // The shared sources in dependency order (math, transcendental, primitives,

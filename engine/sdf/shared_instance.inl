@@ -23,6 +23,18 @@ using std::sqrt;
 
 #include "sdf/glsl/math.glsl"
 #include "sdf/glsl/transcendental.glsl"
+
+// The library's own sin and cos (twist, bend, displacement): in float the
+// shared ones, bit for bit with GLSL (whose prelude maps these names to
+// them); in double the C library's, so the reference keeps double accuracy.
+SHARED_FN real librarySin(real x) {
+    if constexpr (sizeof(real) == sizeof(float)) return formulaSin(x);
+    return std::sin(x);
+}
+SHARED_FN real libraryCos(real x) {
+    if constexpr (sizeof(real) == sizeof(float)) return formulaCos(x);
+    return std::cos(x);
+}
 #include "sdf/glsl/primitives.glsl"
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"

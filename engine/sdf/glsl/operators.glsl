@@ -126,17 +126,18 @@ SHARED_FN vec3 opRotate(vec3 p, vec3 row0, vec3 row1, vec3 row2) {
 
 SHARED_FN vec3 opScale(vec3 p, real s) { return p / s; }
 
-// rotation about y by angle k*y
+// rotation about y by angle k*y (librarySin and libraryCos: transcendental.glsl's
+// in float, which both backends compute bit for bit; the C library's in double)
 SHARED_FN vec3 opTwist(vec3 p, real k) {
-    real c = cos(k * p.y);
-    real s = sin(k * p.y);
+    real c = libraryCos(k * p.y);
+    real s = librarySin(k * p.y);
     return vec3(c * p.x - s * p.z, p.y, s * p.x + c * p.z);
 }
 
 // rotation about z by angle k*x
 SHARED_FN vec3 opBend(vec3 p, real k) {
-    real c = cos(k * p.x);
-    real s = sin(k * p.x);
+    real c = libraryCos(k * p.x);
+    real s = librarySin(k * p.x);
     return vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
 }
 
@@ -179,5 +180,5 @@ SHARED_FN vec3 opRepeatInfinite(vec3 p, vec3 period) {
 
 // The displacement pattern: amplitude * sin(f x) sin(f y) sin(f z).
 SHARED_FN real displacementPattern(vec3 p, real amplitude, real frequency) {
-    return amplitude * sin(frequency * p.x) * sin(frequency * p.y) * sin(frequency * p.z);
+    return amplitude * librarySin(frequency * p.x) * librarySin(frequency * p.y) * librarySin(frequency * p.z);
 }

@@ -1,4 +1,5 @@
 // The transcendental built-ins of user formulas (sin, cos, tan, exp, log, pow),
+// and in float the library's own sin and cos (twist, bend, displacement),
 // written from + - * / floor and bit casts, which llvmpipe and the C++ build
 // compute bit for bit (docs/toolchain-notes.md). llvmpipe's own sin and exp2
 // are other polynomials than the C library's: a trusted `sdf` formula with sin
