@@ -10,8 +10,8 @@
 
 #include "image/compare.h"
 #include "parity/polynomial_reference.h"
-#include "render/render_backend.h"
 #include "parity/reference_agreement.h"
+#include "render/render_backend.h"
 #include "scene/scene.h"
 
 namespace sdfwb::parity {
