@@ -42,16 +42,17 @@ TEST(PolynomialReference, RestrictsThePolynomialToTheRay) {
     EXPECT_NEAR(*parity::firstRoot(c, 0, 10), 2.0, 1e-9);
 }
 
-// The unit sphere (the polynomial node's default) from 5000 units with a
-// narrow view: every ray that passes within 0.99 of the centre meets it where
-// the line's geometry says. Expanded about the eye, F(o + t d)'s terms cancel
-// in double there: the reference reported thousands of holes.
+// The unit sphere as the degree-6 (x^2 + y^2 + z^2)^3 - 1 from 5000 units with
+// a narrow view: every ray that passes within 0.99 of the centre meets it where
+// the line's geometry says. Expanded about the eye, F(o + t d)'s terms (up to
+// 5000^6) cancel in double there.
 TEST(PolynomialReference, HoldsForADistantEye) {
     scene::Scene s;
     s.environment.ground.enabled = false;
     s.camera = {.target = {0, 0, 0}, .azimuth = 30, .elevation = 20, .distance = 5000, .fov = 0.03};
     s.render.maxDistance = 10000;
     s.root = scene::Node::make(scene::NodeKind::Polynomial);
+    s.root.set("formula", std::string("(x^2 + y^2 + z^2)^3 - 1"));
     ASSERT_TRUE(parity::polynomialScene(s).has_value());
     const int w = 64, h = 36;
     auto depths = parity::referenceDepths(s, w, h);
