@@ -8,6 +8,7 @@
 #include "ui/material_edits.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
+#include "ui/setting_widgets.h"
 
 namespace sdfwb::ui {
 void drawMaterialsPanel(Editor& editor, UiState& ui) {
@@ -36,11 +37,9 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
                     reassignMaterial(s, old, name);
                 }));
             }
-            set("Edit material", colorEdit("diffuse", m.diffuse));
-            set("Edit material", colorEdit("ambient", m.ambient));
-            set("Edit material", colorEdit("specular", m.specular));
-            set("Edit material", dragReal("shininess", m.shininess, 0.5, 0.1, 4096.0, "%.1f"));
-            set("Edit material", colorEdit("emission", m.emission));
+            for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
+                set("Edit material", settingWidget(row, m));  // the name has its own field above
+            }
             drawRemoveMaterialButton(editor, ui, i);
         }
         ImGui::PopID();

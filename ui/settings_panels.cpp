@@ -1,31 +1,14 @@
 // Render settings and environment: the scene-wide values of the format's
-// "render" and "environment" objects.
+// "render" and "environment" objects, one widget per row of their settings
+// tables (scene/settings_table.h).
 
 #include <imgui.h>
 
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
+#include "ui/setting_widgets.h"
 
 namespace sdfwb::ui {
-namespace {
-
-template <typename Enum, size_t N>
-bool enumCombo(const char* label, Enum& value, const char* const (&names)[N]) {
-    int index = static_cast<int>(value);
-    bool changed = ImGui::Combo(label, &index, names, static_cast<int>(N));
-    if (changed) value = static_cast<Enum>(index);
-    return changed;
-}
-
-WidgetEdit dragInt(const char* label, int& value, float speed, int minimum, int maximum) {
-    bool changed = ImGui::DragInt(label, &value, speed, minimum, maximum);
-    return {changed, ImGui::IsItemDeactivatedAfterEdit()};
-}
-
-// A combo or checkbox: each change is its own undo step.
-WidgetEdit discrete(bool changed) { return {changed, changed}; }
-
-}  // namespace
 
 void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
     scene::RenderSettings r = editor.scene().render;
@@ -33,18 +16,11 @@ void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
         commitEdit(editor, ui, edit, "Edit render settings", [&r](scene::Scene& s) { s.render = r; });
     };
     ImGui::PushItemWidth(-130);
-    set(dragInt("AA level", r.aa, 0.05f, 1, scene::kMaxAa));
-    set(dragInt("snapshot width", r.width, 1.0f, 1, scene::kMaxImageSize));
-    set(dragInt("snapshot height", r.height, 1.0f, 1, scene::kMaxImageSize));
-    set(discrete(enumCombo("shadows", r.shadows, scene::kShadowModeNames)));
-    set(dragInt("shadow steps", r.shadowSteps, 0.5f, 1, scene::kMaxShadowSteps));
-    set(dragInt("AO samples", r.aoSamples, 0.1f, 0, scene::kMaxAoSamples));
-    set(dragReal("AO distance", r.aoDistance, 0.01, 1e-4, 1e6));
-    set(discrete(enumCombo("lighting", r.lighting, scene::kLightingModelNames)));
-    set(dragInt("max steps", r.maxSteps, 1.0f, 1, scene::kMaxSteps));
-    set(dragReal("max distance", r.maxDistance, 0.5, 1e-3, 1e9));
-    set(discrete(enumCombo("epsilon mode", r.epsilonMode, scene::kEpsilonModeNames)));
-    set(dragReal("epsilon", r.epsilon, r.epsilonMode == scene::EpsilonMode::Pixel ? 0.01 : 1e-5, 1e-9, 1e6, "%.5g"));
+    for (const scene::Setting<scene::RenderSettings>& row : scene::renderSettings()) {
+        // in pixel mode epsilon counts sub-sample footprints: drag by hundredths
+        bool pixels = row.key == "epsilon" && r.epsilonMode == scene::EpsilonMode::Pixel;
+        set(settingWidget(row, r, pixels ? 0.01 : 0.0));
+    }
     ImGui::PopItemWidth();
 }
 
@@ -54,16 +30,10 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
         commitEdit(editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; });
     };
     ImGui::PushItemWidth(-130);
-    set(colorEdit("ambient light", e.ambient));
-    set(colorEdit("background", e.background));
+    for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) set(settingWidget(row, e));
     ImGui::Separator();
     ImGui::TextDisabled("Ground plane");
-    set(discrete(ImGui::Checkbox("enabled", &e.ground.enabled)));
-    set(dragReal("height", e.ground.height, 0.01, -1e6, 1e6));
-    set(discrete(enumCombo("pattern", e.ground.pattern, scene::kGroundPatternNames)));
-    set(dragReal("cell size", e.ground.cellSize, 0.01, 1e-4, 1e6));
-    set(dragReal("line width", e.ground.lineWidth, 0.001, 0.0, 1e6));
-    set(colorEdit("second colour", e.ground.secondColor));
+    for (const scene::Setting<scene::Ground>& row : scene::groundSettings()) set(settingWidget(row, e.ground));
     const std::string& current = e.ground.material;
     if (ImGui::BeginCombo("material", current.empty() ? "(default)" : current.c_str())) {
         if (ImGui::Selectable("(default)", current.empty())) {

@@ -85,7 +85,7 @@ inline void runPost(F fn, const program::Instruction& in, const vec4* q, Registe
 }
 template <int Slots, typename F>
 inline void runConstant(F fn, const program::Instruction& in, const vec4*, Registers& r) {
-    r.samples[in.dst] = fn(materialAtSlot(r.params, 0));
+    r.samples[in.dst] = fn(materialAtSlot(r.params, MATERIAL_SLOT));
 }
 
 // Runs `code` (the program's instructions, or a pruned list of them) on
@@ -133,24 +133,19 @@ struct SampleResult {
     real t;  // march distance of the hit
 };
 
-// One sub-sample of one pixel, driven exactly as the GLSL backend's loop drives it.
-inline SampleResult traceSample(const program::Program& program, const prune::PruneGrid* grid, const vec4* params,
-                                Scratch& scratch,
-                                const Camera& camera, const TraceSettings& settings, const Light* lights, real px,
-                                real py) {
-    Ray ray = cameraRay(camera, px, py, real(program.width), real(program.height));
-    TraceState s = traceBegin(ray);
-    Sample field = shapeSample(real(0), s.material);
-    Light noLight = Light(vec3(real(0), real(1), real(0)), vec3(real(0)), real(1));
-    while (s.phase != PHASE_DONE) {
-        Light light = settings.lightCount > 0 ? lights[lightIndex(s) < settings.lightCount ? lightIndex(s) : 0] : noLight;
-        if (traceNeedsSample(s)) {
-            field = fieldAt(program, grid, params, scratch, tracePoint(s, light, settings));
-        }
-        s = traceAdvance(s, field, light, settings);
-    }
-    return SampleResult{s.color, s.steps, s.hit, s.t};
-}
+// The shared driver loop (sdf/glsl/sample_driver.glsl) with this backend's
+// P(slot) and map(p), as the generated shader has them.
+struct SampleDriver {
+    const program::Program& program;
+    const prune::PruneGrid* grid;
+    const vec4* params;
+    Scratch& scratch;
+
+    vec4 P(int slot) const { return params[slot]; }
+    Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p); }
+
+#include "sdf/glsl/sample_driver.glsl"
+};
 
 // The scene's constants converted to this precision once per render.
 struct Kernel {
@@ -161,9 +156,6 @@ struct Kernel {
     const program::Program& program;
     std::shared_ptr<const prune::PruneGrid> grid;
     std::vector<vec4> params;  // the program's, then the grid's
-    Camera camera;
-    TraceSettings settings;
-    std::vector<Light> lights;
 
     explicit Kernel(const program::Program& p) : program(p), grid(prune::pruneGridFor(p)) {
         for (const glm::dvec4& v : p.params) {
@@ -174,19 +166,19 @@ struct Kernel {
                 params.push_back(vec4(v));
             }
         }
-        const program::CameraParams& c = p.camera;
-        camera = Camera(vec3(c.origin), vec3(c.forward), vec3(c.right), vec3(c.up), real(c.tanHalfFov));
-        const program::TraceParams& t = p.trace;
-        settings = TraceSettings(t.maxSteps, real(t.maxDistance), real(t.epsilon), real(t.epsilonPerDistance),
-                                 t.shadowMode, t.shadowSteps, t.aoSamples, real(t.aoDistance), t.lightingModel,
-                                 real(t.stepRelaxation), static_cast<int>(p.lights.size()), vec3(t.ambientLight), vec3(t.background));
-        for (const program::LightParams& l : p.lights) {
-            lights.push_back(Light(vec3(l.direction), vec3(l.color), real(l.softness)));
-        }
+    }
+
+    // The primary ray through (px, py), from the camera block of the parameters.
+    Ray ray(real px, real py) const {
+        Camera camera = cameraFromSlots(params[CAMERA_SLOT], params[CAMERA_SLOT + 1], params[CAMERA_SLOT + 2],
+                                        params[CAMERA_SLOT + 3]);
+        return cameraRay(camera, px, py, real(program.width), real(program.height));
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        return traceSample(program, grid.get(), params.data(), scratch, camera, settings, lights.data(), px, py);
+        TraceState s = SampleDriver{program, grid.get(), params.data(), scratch}.traceSample(
+            px, py, real(program.width), real(program.height));
+        return SampleResult{s.color, s.steps, s.hit, s.t};
     }
 
     Sample map(Scratch& scratch, vec3 p) const { return mapProgram(program, params.data(), scratch, p); }

@@ -67,25 +67,21 @@ int decidingShape(const program::Program& program, const f32::Kernel& kernel, f3
     int nextShape = 0;
     for (const Instruction& in : program.code) {
         program::OpClass opClass = program::opcodeInfo(in.op).opClass;
-        bool combine = opClass == program::OpClass::Combine || opClass == program::OpClass::SmoothCombine;
+        bool combine = program::isCombineClass(opClass);
         float a = combine ? scratch.samples[static_cast<size_t>(in.a)].d : 0.0f;
         float b = combine ? scratch.samples[static_cast<size_t>(in.b)].d : 0.0f;
         single.code[0] = in;
         single.result = opClass == program::OpClass::Point ? 0 : in.dst;  // mapProgram reads a sample register
         f32::mapProgram(single, kernel.params.data(), scratch, point);
         auto dst = static_cast<size_t>(in.dst);
-        switch (opClass) {
-        case program::OpClass::Point: break;
-        case program::OpClass::Shape:
-        case program::OpClass::ShapeSample:
-        case program::OpClass::FormulaShape:
-        case program::OpClass::FormulaSample: source[dst] = in.op == Opcode::Ground ? kGround : nextShape++; break;
-        case program::OpClass::Combine:
-        case program::OpClass::SmoothCombine:
+        if (program::isShapeClass(opClass)) {
+            source[dst] = in.op == Opcode::Ground ? kGround : nextShape++;
+        } else if (combine) {
             source[dst] = resultFromFirst(in.op, a, b) ? source[static_cast<size_t>(in.a)] : source[static_cast<size_t>(in.b)];
-            break;
-        case program::OpClass::Post: source[dst] = source[static_cast<size_t>(in.a)]; break;
-        case program::OpClass::Constant: source[dst] = kNothing; break;
+        } else if (opClass == program::OpClass::Post) {
+            source[dst] = source[static_cast<size_t>(in.a)];
+        } else if (opClass == program::OpClass::Constant) {
+            source[dst] = kNothing;
         }
     }
     return source[static_cast<size_t>(program.result)];
@@ -95,10 +91,7 @@ std::optional<std::vector<int>> pathOfShape(const scene::Scene& scene, const pro
     if (shape < 0) return std::nullopt;
     std::vector<std::vector<int>> paths = primitivePaths(scene.root);
     auto shapes = std::count_if(program.code.begin(), program.code.end(), [](const Instruction& in) {
-        program::OpClass c = program::opcodeInfo(in.op).opClass;
-        bool shape = c == program::OpClass::Shape || c == program::OpClass::ShapeSample ||
-                     c == program::OpClass::FormulaShape || c == program::OpClass::FormulaSample;
-        return shape && in.op != Opcode::Ground;
+        return program::isShapeClass(program::opcodeInfo(in.op).opClass) && in.op != Opcode::Ground;
     });
     // a compiler that skipped or repeated a primitive would misname every pick
     if (static_cast<size_t>(shapes) != paths.size() || static_cast<size_t>(shape) >= paths.size()) return std::nullopt;
@@ -154,8 +147,7 @@ PickResult pickPixel(const scene::Scene& scene, const program::Program& program,
     pick.steps = traced.steps;
     pick.hit = traced.hit;
     if (!traced.hit) return pick;
-    f32::Ray ray = f32::cameraRay(kernel.camera, px, py, static_cast<float>(program.width),
-                                  static_cast<float>(program.height));
+    f32::Ray ray = kernel.ray(px, py);
     f32::vec3 march = ray.origin + ray.direction * traced.t;
     pick.t = traced.t;
     pick.position = glm::dvec3(march) + scene::cameraFrame(scene.camera).eye;

@@ -24,12 +24,7 @@ struct GlRenderer::CachedProgram {
 
 namespace {
 
-const char* const kUniformNames[] = {
-    "uParams", "uCameraOrigin", "uCameraForward", "uCameraRight", "uCameraUp", "uTanHalfFov", "uResolution",
-    "uSubsample", "uAA", "uMaxSteps", "uMaxDistance", "uEpsilon", "uEpsilonPerDistance", "uShadowMode",
-    "uShadowSteps", "uAoSamples", "uAoDistance", "uLightingModel", "uStepRelaxation", "uLightCount", "uAmbientLight",
-    "uBackground",
-    "uLightDirection", "uLightColor", "uLightSoftness"};
+const char* const kUniformNames[] = {"uParams", "uResolution", "uSubsample", "uAA"};
 
 }  // namespace
 
@@ -98,42 +93,9 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
 
     GLuint p = cached.program.get();
     gl_.UseProgram(p);
-    auto vec3 = [&](const char* name, const glm::dvec3& v) {
-        gl_.Uniform3f(cached.uniform(name), static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z));
-    };
     gl_.Uniform1i(cached.uniform("uParams"), 0);
-    vec3("uCameraOrigin", program.camera.origin);
-    vec3("uCameraForward", program.camera.forward);
-    vec3("uCameraRight", program.camera.right);
-    vec3("uCameraUp", program.camera.up);
-    gl_.Uniform1f(cached.uniform("uTanHalfFov"), static_cast<float>(program.camera.tanHalfFov));
     gl_.Uniform2f(cached.uniform("uResolution"), static_cast<float>(program.width), static_cast<float>(program.height));
     gl_.Uniform1i(cached.uniform("uAA"), program.aa);
-    const program::TraceParams& t = program.trace;
-    gl_.Uniform1i(cached.uniform("uMaxSteps"), t.maxSteps);
-    gl_.Uniform1f(cached.uniform("uMaxDistance"), static_cast<float>(t.maxDistance));
-    gl_.Uniform1f(cached.uniform("uEpsilon"), static_cast<float>(t.epsilon));
-    gl_.Uniform1f(cached.uniform("uEpsilonPerDistance"), static_cast<float>(t.epsilonPerDistance));
-    gl_.Uniform1i(cached.uniform("uShadowMode"), t.shadowMode);
-    gl_.Uniform1i(cached.uniform("uShadowSteps"), t.shadowSteps);
-    gl_.Uniform1i(cached.uniform("uAoSamples"), t.aoSamples);
-    gl_.Uniform1f(cached.uniform("uAoDistance"), static_cast<float>(t.aoDistance));
-    gl_.Uniform1i(cached.uniform("uLightingModel"), t.lightingModel);
-    gl_.Uniform1f(cached.uniform("uStepRelaxation"), static_cast<float>(t.stepRelaxation));
-    gl_.Uniform1i(cached.uniform("uLightCount"), static_cast<int>(program.lights.size()));
-    vec3("uAmbientLight", t.ambientLight);
-    vec3("uBackground", t.background);
-    std::vector<float> directions(24, 0.0f), colors(24, 0.0f), softness(8, 1.0f);
-    for (size_t i = 0; i < program.lights.size() && i < 8; ++i) {
-        for (int c = 0; c < 3; ++c) {
-            directions[3 * i + static_cast<size_t>(c)] = static_cast<float>(program.lights[i].direction[c]);
-            colors[3 * i + static_cast<size_t>(c)] = static_cast<float>(program.lights[i].color[c]);
-        }
-        softness[i] = static_cast<float>(program.lights[i].softness);
-    }
-    gl_.Uniform3fv(cached.uniform("uLightDirection"), 8, directions.data());
-    gl_.Uniform3fv(cached.uniform("uLightColor"), 8, colors.data());
-    gl_.Uniform1fv(cached.uniform("uLightSoftness"), 8, softness.data());
 }
 
 bool GlRenderer::hasProgram(const program::Program& program) const {

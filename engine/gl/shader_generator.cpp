@@ -15,32 +15,13 @@ using program::opcodeInfo;
 namespace {
 
 // Uniforms and helpers between the shared library and map(); names match gl_renderer.cpp.
+// Uniforms and helpers between the shared library and map(); names match
+// gl_renderer.cpp. Everything else the tracer reads is in the parameter buffer.
 constexpr std::string_view kInterface = R"(
 uniform samplerBuffer uParams;
-uniform vec3 uCameraOrigin;
-uniform vec3 uCameraForward;
-uniform vec3 uCameraRight;
-uniform vec3 uCameraUp;
-uniform float uTanHalfFov;
 uniform vec2 uResolution;
 uniform ivec2 uSubsample;
 uniform int uAA;
-uniform int uMaxSteps;
-uniform float uMaxDistance;
-uniform float uEpsilon;
-uniform float uEpsilonPerDistance;
-uniform int uShadowMode;
-uniform int uShadowSteps;
-uniform int uAoSamples;
-uniform float uAoDistance;
-uniform float uStepRelaxation;
-uniform int uLightingModel;
-uniform int uLightCount;
-uniform vec3 uAmbientLight;
-uniform vec3 uBackground;
-uniform vec3 uLightDirection[8];
-uniform vec3 uLightColor[8];
-uniform float uLightSoftness[8];
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outStats;
@@ -51,35 +32,13 @@ invariant outStats;
 
 vec4 P(int slot) { return texelFetch(uParams, slot); }
 Material M(int slot) { return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3)); }
-
-Light lightAt(int i) {
-    int index = clamp(i, 0, 7);
-    return Light(uLightDirection[index], uLightColor[index], uLightSoftness[index]);
-}
 )";
 
 constexpr std::string_view kMain = R"(
 void main() {
-    Camera camera = Camera(uCameraOrigin, uCameraForward, uCameraRight, uCameraUp, uTanHalfFov);
-    TraceSettings settings = TraceSettings(uMaxSteps, uMaxDistance, uEpsilon, uEpsilonPerDistance,
-        uShadowMode, uShadowSteps, uAoSamples, uAoDistance, uLightingModel, uStepRelaxation, uLightCount,
-        uAmbientLight, uBackground);
     real px = gl_FragCoord.x + subsampleOffset(uSubsample.x, uAA);
     real py = gl_FragCoord.y + subsampleOffset(uSubsample.y, uAA);
-    Ray ray = cameraRay(camera, px, py, uResolution.x, uResolution.y);
-    TraceState s = traceBegin(ray);
-    Sample field = shapeSample(real(0), s.material);
-    int limit = traceIterationBound(settings);
-    for (int i = 0; i < limit; ++i) {
-        if (s.phase == PHASE_DONE) {
-            break;
-        }
-        Light light = lightAt(lightIndex(s));
-        if (traceNeedsSample(s)) {
-            field = map(tracePoint(s, light, settings));
-        }
-        s = traceAdvance(s, field, light, settings);
-    }
+    TraceState s = traceSample(px, py, uResolution.x, uResolution.y);
     outColor = vec4(s.color, 1.0);
     outStats = vec4(float(s.steps), s.hit ? 1.0 : 0.0, s.hit ? s.t : 0.0, 1.0);
 }
@@ -129,7 +88,7 @@ void emitInstruction(std::ostringstream& out, const Instruction& in) {
     case OpClass::Post:
         out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << slots(in) << ");\n";
         break;
-    case OpClass::Constant: out << sample(in.dst) << " = " << fn << "(M(0));\n"; break;
+    case OpClass::Constant: out << sample(in.dst) << " = " << fn << "(M(MATERIAL_SLOT));\n"; break;
     }
 }
 
@@ -163,7 +122,7 @@ std::string generateFragmentShader(const program::Program& program) {
         emitInstruction(out, in);
     }
     out << "    return " << sample(program.result) << ";\n}\n";
-    out << kMain;
+    out << sdf::glslSampleDriver() << kMain;
     return out.str();
 }
 

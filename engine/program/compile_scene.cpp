@@ -24,6 +24,8 @@ namespace {
 // Scene enums become the shared library's integer codes by static_cast; these
 // keep the two numberings one.
 namespace codes = sdf::f32;
+// The compiler packs parameter blocks with the shared packers, in double precision.
+namespace shared = sdf::f64;
 static_assert(static_cast<int>(scene::ShadowMode::None) == codes::SHADOW_NONE);
 static_assert(static_cast<int>(scene::ShadowMode::Hard) == codes::SHADOW_HARD);
 static_assert(static_cast<int>(scene::ShadowMode::Soft) == codes::SHADOW_SOFT);
@@ -92,6 +94,8 @@ ShapeCode repeatInfiniteCode(const Node& n) { return {Opcode::RepeatInfinite, {d
 class Compiler {
 public:
     explicit Compiler(const scene::Scene& scene) : scene_(scene) {
+        // the scene-wide blocks come first; compileScene fills them
+        program_.params.resize(static_cast<size_t>(shared::MATERIAL_SLOT), dvec4(0.0));
         defaultMaterialSlot_ = addMaterial(scene::defaultMaterial());
         for (const scene::Material& m : scene.materials) {
             materialSlots_[m.name] = addMaterial(m);
@@ -264,8 +268,12 @@ private:
     }
 
     int addMaterial(const scene::Material& m) {
-        return addParams({dvec4(m.ambient, m.shininess), dvec4(m.diffuse, 0), dvec4(m.specular, 0),
-                          dvec4(m.emission, 0)});
+        shared::Material packed{.ambient = m.ambient, .diffuse = m.diffuse, .specular = m.specular,
+                                .shininess = m.shininess, .emission = m.emission,
+                                .emissionStrength = m.emissionStrength};
+        int first = static_cast<int>(program_.params.size());
+        for (int i = 0; i < shared::MATERIAL_SLOTS; ++i) program_.params.push_back(shared::materialSlot(packed, i));
+        return first;
     }
 
     // The formula's tape: value, or value and gradient (x, y, z are variables 0, 1, 2).
@@ -413,6 +421,46 @@ int Compiler::compile(const Node& node, int point, dvec3 offset) {
     return (this->*kCompileRules[static_cast<size_t>(node.kind)].compile)(node, point, offset);
 }
 
+// The trace settings, camera and lights into their blocks at the start of the
+// parameter buffer (sdf/glsl/parameter_blocks.glsl). Settings only the tracer
+// reads come straight from the scene's; Program::trace mirrors the rest for the
+// host (loop bounds, reports).
+void writeSceneBlocks(Program& program, const scene::RenderSettings& r) {
+    const TraceParams& t = program.trace;
+    shared::TraceSettings settings{.maxSteps = t.maxSteps,
+                                   .maxDistance = t.maxDistance,
+                                   .epsilon = t.epsilon,
+                                   .epsilonPerDistance = t.epsilonPerDistance,
+                                   .shadowMode = t.shadowMode,
+                                   .shadowSteps = t.shadowSteps,
+                                   .aoSamples = t.aoSamples,
+                                   .aoDistance = t.aoDistance,
+                                   .lightingModel = t.lightingModel,
+                                   .relaxation = t.stepRelaxation,
+                                   .lightCount = static_cast<int>(program.lights.size()),
+                                   .exposure = r.exposure,
+                                   .ambientLight = t.ambientLight,
+                                   .background = t.background};
+    for (int i = 0; i < shared::TRACE_SLOTS; ++i) {
+        program.params[static_cast<size_t>(shared::TRACE_SLOT + i)] = shared::traceSettingsSlot(settings, i);
+    }
+    const CameraParams& c = program.camera;
+    shared::Camera camera{
+        .origin = c.origin, .forward = c.forward, .right = c.right, .up = c.up, .tanHalfFov = c.tanHalfFov};
+    for (int i = 0; i < shared::CAMERA_SLOTS; ++i) {
+        program.params[static_cast<size_t>(shared::CAMERA_SLOT + i)] = shared::cameraSlot(camera, i);
+    }
+    static_assert(scene::kMaxLights == shared::MAX_LIGHTS);
+    for (size_t l = 0; l < program.lights.size(); ++l) {
+        const LightParams& light = program.lights[l];
+        shared::Light packed{.direction = light.direction, .color = light.color, .softness = light.softness};
+        for (int i = 0; i < shared::LIGHT_SLOTS; ++i) {
+            size_t slot = static_cast<size_t>(shared::LIGHT_SLOT + shared::LIGHT_SLOTS * static_cast<int>(l) + i);
+            program.params[slot] = shared::lightSlot(packed, i);
+        }
+    }
+}
+
 }  // namespace
 
 Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
@@ -463,6 +511,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     for (const scene::Light& light : scene.lights) {
         program.lights.push_back({glm::normalize(light.direction), light.color, light.softness});
     }
+    writeSceneBlocks(program, r);
     return program;
 }
 

@@ -24,6 +24,13 @@ enum class OpClass {
     Constant,       // S[dst] = f(default material): "nothing here"
 };
 
+// A primitive (its result carries a shape's material), and a boolean of two samples.
+constexpr bool isShapeClass(OpClass c) {
+    return c == OpClass::Shape || c == OpClass::ShapeSample || c == OpClass::FormulaShape ||
+           c == OpClass::FormulaSample;
+}
+constexpr bool isCombineClass(OpClass c) { return c == OpClass::Combine || c == OpClass::SmoothCombine; }
+
 // X(Enum, name, class, parameter slots, shared function). Parameter layouts are
 // documented beside each function in instructions.glsl. Formula opcodes take
 // Program::formulas[Instruction::variant].

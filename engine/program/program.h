@@ -37,8 +37,8 @@ struct Instruction {
                    // Program::formulas; else 0
 };
 
-// Parameter slots of one material: (ambient, shininess), (diffuse, 0), (specular, 0), (emission, 0).
-inline constexpr int kMaterialSlots = 4;
+// The parameter buffer's layout (scene-wide blocks, then materials) is the
+// shared library's: sdf/glsl/parameter_blocks.glsl.
 
 struct LightParams {
     glm::dvec3 direction;  // unit

@@ -51,6 +51,7 @@ struct Material {
     glm::dvec3 specular{0.3};   // R_E
     double shininess = 32.0;    // alpha
     glm::dvec3 emission{0.0};   // L_E
+    double emissionStrength = 1.0;  // multiplies L_E
 
     bool operator==(const Material&) const = default;
 };
@@ -101,6 +102,7 @@ struct RenderSettings {
     int aoSamples = 0;               // M; 0 disables ambient occlusion
     double aoDistance = 1.0;         // scene units covered by the AO samples
     LightingModel lighting = LightingModel::BlinnPhong;
+    double exposure = 1.0;           // multiplies the final linear colour
     double stepRelaxation = 1.0;     // omega of over-relaxed primary steps, 1 to 1.9; 1 is plain sphere tracing
 
     bool operator==(const RenderSettings&) const = default;

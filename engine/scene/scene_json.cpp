@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <set>
+#include <span>
 #include <sstream>
+#include <type_traits>
 
 #include "io/atomic_file.h"
+#include "scene/settings_table.h"
 
 namespace sdfwb::scene {
 
@@ -55,13 +58,15 @@ public:
         out = v;
     }
 
-    void numberBetween(const json& value, const std::string& path, double minimum, double maximum, double& out) {
+    void numberBetween(const json& value, const std::string& path, double minimum, double maximum,
+                       const std::string& unit, double& out) {
         double v = 0;
         if (!number(value, path, v)) {
             return;
         }
         if (!(v >= minimum && v <= maximum)) {
-            fail(path, "must be from " + describe(minimum) + " to " + describe(maximum) + " (got " + describe(v) + ")");
+            fail(path, "must be from " + describe(minimum) + " to " + describe(maximum) + unit + " (got " + describe(v) +
+                           ")");
             return;
         }
         out = v;
@@ -115,23 +120,22 @@ public:
         out = value.get<std::string>();
     }
 
-    template <typename Enum, size_t N>
-    void choice(const json& value, const std::string& path, const char* const (&names)[N], Enum& out) {
-        std::string s;
+    bool choice(const json& value, const std::string& path, std::span<const char* const> names, int& out) {
         if (!value.is_string()) {
             fail(path, "must be a string");
-            return;
+            return false;
         }
-        s = value.get<std::string>();
+        std::string s = value.get<std::string>();
         std::string list;
-        for (size_t i = 0; i < N; ++i) {
+        for (size_t i = 0; i < names.size(); ++i) {
             if (names[i] == s) {
-                out = static_cast<Enum>(i);
-                return;
+                out = static_cast<int>(i);
+                return true;
             }
             list += (i ? ", " : "") + std::string(names[i]);
         }
         fail(path, "must be one of " + list + " (got \"" + s + "\")");
+        return false;
     }
 };
 
@@ -186,6 +190,95 @@ private:
     std::set<std::string> known_;
     bool valid_ = false;
 };
+
+// ---- settings from the tables of scene/settings_table.h ----
+template <typename Owner>
+void readSetting(Reader& reader, const Setting<Owner>& row, const json& value, const std::string& path, Owner& owner) {
+    std::string unit = row.unit.empty() ? "" : " " + std::string(row.unit);
+    switch (row.type) {
+    case SettingType::Integer:
+        reader.integer(value, path, static_cast<int>(row.minimum), static_cast<int>(row.maximum),
+                       owner.*std::get<int Owner::*>(row.member));
+        return;
+    case SettingType::Real: {
+        double& out = owner.*std::get<double Owner::*>(row.member);
+        switch (row.range) {
+        case RealRange::Any: reader.number(value, path, out); return;
+        case RealRange::Positive: reader.numberAtLeast(value, path, 0, true, out); return;
+        case RealRange::NonNegative: reader.numberAtLeast(value, path, 0, false, out); return;
+        case RealRange::Closed: reader.numberBetween(value, path, row.minimum, row.maximum, unit, out); return;
+        case RealRange::Open: {
+            double v = 0;
+            if (!reader.number(value, path, v)) return;
+            if (!(v > row.minimum && v < row.maximum)) {
+                reader.fail(path, "must be strictly between " + describe(row.minimum) + " and " + describe(row.maximum) +
+                                      unit + " (got " + describe(v) + ")");
+                return;
+            }
+            out = v;
+            return;
+        }
+        }
+        return;
+    }
+    case SettingType::Choice: {
+        const ChoiceMember<Owner>& access = std::get<ChoiceMember<Owner>>(row.member);
+        int index = 0;
+        if (reader.choice(value, path, row.choices, index)) access.set(owner, index);
+        return;
+    }
+    case SettingType::Colour: reader.colour(value, path, owner.*std::get<dvec3 Owner::*>(row.member)); return;
+    case SettingType::Vector: reader.vec3(value, path, owner.*std::get<dvec3 Owner::*>(row.member)); return;
+    case SettingType::Direction: {
+        dvec3 d;
+        if (!reader.vec3(value, path, d)) return;
+        if (d == dvec3(0.0)) {
+            reader.fail(path, "must not be the zero vector");
+            return;
+        }
+        owner.*std::get<dvec3 Owner::*>(row.member) = d;
+        return;
+    }
+    case SettingType::Flag:
+        if (!value.is_boolean()) {
+            reader.fail(path, "must be true or false");
+            return;
+        }
+        owner.*std::get<bool Owner::*>(row.member) = value.get<bool>();
+        return;
+    case SettingType::Text: reader.string(value, path, owner.*std::get<std::string Owner::*>(row.member)); return;
+    }
+}
+
+template <typename Owner>
+void readSettings(Reader& reader, ObjectReader& object, std::span<const Setting<Owner>> rows, Owner& owner) {
+    for (const Setting<Owner>& row : rows) {
+        object.member(row.key, [&](const json& v, const std::string& p) { readSetting(reader, row, v, p, owner); });
+    }
+}
+
+json vec3Json(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+template <typename Owner>
+json settingsJson(std::span<const Setting<Owner>> rows, const Owner& owner) {
+    json out = json::object();
+    for (const Setting<Owner>& row : rows) {
+        json& slot = out[std::string(row.key)];
+        std::visit(
+            [&](const auto& member) {
+                using Member = std::decay_t<decltype(member)>;
+                if constexpr (std::is_same_v<Member, ChoiceMember<Owner>>) {
+                    slot = row.choices[static_cast<size_t>(member.get(owner))];
+                } else if constexpr (std::is_same_v<Member, dvec3 Owner::*>) {
+                    slot = vec3Json(owner.*member);
+                } else {
+                    slot = owner.*member;
+                }
+            },
+            row.member);
+    }
+    return out;
+}
 
 FieldValue readFieldValue(Reader& reader, const FieldSpec& field, const json& value, const std::string& path) {
     FieldValue result = field.defaultValue;
@@ -283,92 +376,25 @@ Node readNode(Reader& reader, const json& value, const std::string& path) {
 
 void readCamera(Reader& reader, const json& value, const std::string& path, Camera& camera) {
     ObjectReader object(reader, value, path);
-    object.member("target", [&](const json& v, const std::string& p) { reader.vec3(v, p, camera.target); });
-    object.member("azimuth", [&](const json& v, const std::string& p) { reader.number(v, p, camera.azimuth); });
-    object.member("elevation", [&](const json& v, const std::string& p) {
-        double e = camera.elevation;
-        if (reader.number(v, p, e)) {
-            if (e < -90 || e > 90) {
-                reader.fail(p, "must be from -90 to 90 degrees (got " + describe(e) + ")");
-            } else {
-                camera.elevation = e;
-            }
-        }
-    });
-    object.member("distance", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, true, camera.distance);
-    });
-    object.member("fov", [&](const json& v, const std::string& p) {
-        double f = camera.fov;
-        if (reader.number(v, p, f)) {
-            if (!(f > 0 && f < 180)) {
-                reader.fail(p, "must be strictly between 0 and 180 degrees (got " + describe(f) + ")");
-            } else {
-                camera.fov = f;
-            }
-        }
-    });
+    readSettings(reader, object, cameraSettings(), camera);
     object.finish("camera");
 }
 
 void readRender(Reader& reader, const json& value, const std::string& path, RenderSettings& render) {
     ObjectReader object(reader, value, path);
-    object.member("width", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, kMaxImageSize, render.width); });
-    object.member("height", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, kMaxImageSize, render.height); });
-    object.member("aa", [&](const json& v, const std::string& p) { reader.integer(v, p, 1, kMaxAa, render.aa); });
-    object.member("max_steps", [&](const json& v, const std::string& p) {
-        reader.integer(v, p, 1, kMaxSteps, render.maxSteps);
-    });
-    object.member("max_distance", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, true, render.maxDistance);
-    });
-    object.member("epsilon", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, true, render.epsilon);
-    });
-    object.member("epsilon_mode", [&](const json& v, const std::string& p) {
-        reader.choice(v, p, kEpsilonModeNames, render.epsilonMode);
-    });
-    object.member("shadows", [&](const json& v, const std::string& p) { reader.choice(v, p, kShadowModeNames, render.shadows); });
-    object.member("shadow_steps", [&](const json& v, const std::string& p) {
-        reader.integer(v, p, 1, kMaxShadowSteps, render.shadowSteps);
-    });
-    object.member("ao_samples", [&](const json& v, const std::string& p) { reader.integer(v, p, 0, kMaxAoSamples, render.aoSamples); });
-    object.member("ao_distance", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, true, render.aoDistance);
-    });
-    object.member("lighting", [&](const json& v, const std::string& p) {
-        reader.choice(v, p, kLightingModelNames, render.lighting);
-    });
-    object.member("step_relaxation", [&](const json& v, const std::string& p) {
-        reader.numberBetween(v, p, 1, 1.9, render.stepRelaxation);
-    });
+    readSettings(reader, object, renderSettings(), render);
     object.finish("render");
 }
 
 void readGround(Reader& reader, const json& value, const std::string& path, Ground& ground) {
     ObjectReader object(reader, value, path);
-    object.member("enabled", [&](const json& v, const std::string& p) {
-        if (!v.is_boolean()) {
-            reader.fail(p, "must be true or false");
-        } else {
-            ground.enabled = v.get<bool>();
-        }
-    });
-    object.member("height", [&](const json& v, const std::string& p) { reader.number(v, p, ground.height); });
-    object.member("material", [&](const json& v, const std::string& p) { reader.string(v, p, ground.material); });
-    object.member("pattern", [&](const json& v, const std::string& p) { reader.choice(v, p, kGroundPatternNames, ground.pattern); });
-    object.member("cell_size", [&](const json& v, const std::string& p) { reader.numberAtLeast(v, p, 0, true, ground.cellSize); });
-    object.member("line_width", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, false, ground.lineWidth);
-    });
-    object.member("second_color", [&](const json& v, const std::string& p) { reader.colour(v, p, ground.secondColor); });
+    readSettings(reader, object, groundSettings(), ground);
     object.finish("ground");
 }
 
 void readEnvironment(Reader& reader, const json& value, const std::string& path, Environment& environment) {
     ObjectReader object(reader, value, path);
-    object.member("ambient", [&](const json& v, const std::string& p) { reader.colour(v, p, environment.ambient); });
-    object.member("background", [&](const json& v, const std::string& p) { reader.colour(v, p, environment.background); });
+    readSettings(reader, object, environmentSettings(), environment);
     object.member("ground", [&](const json& v, const std::string& p) { readGround(reader, v, p, environment.ground); });
     object.finish("environment");
 }
@@ -376,20 +402,7 @@ void readEnvironment(Reader& reader, const json& value, const std::string& path,
 Light readLight(Reader& reader, const json& value, const std::string& path) {
     Light light;
     ObjectReader object(reader, value, path);
-    object.member("direction", [&](const json& v, const std::string& p) {
-        dvec3 d;
-        if (reader.vec3(v, p, d)) {
-            if (d == dvec3(0.0)) {
-                reader.fail(p, "must not be the zero vector");
-            } else {
-                light.direction = d;
-            }
-        }
-    });
-    object.member("color", [&](const json& v, const std::string& p) { reader.colour(v, p, light.color); });
-    object.member("softness", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, true, light.softness);
-    });
+    readSettings(reader, object, lightSettings(), light);
     object.finish("light");
     return light;
 }
@@ -397,14 +410,7 @@ Light readLight(Reader& reader, const json& value, const std::string& path) {
 Material readMaterial(Reader& reader, const json& value, const std::string& path) {
     Material material;
     ObjectReader object(reader, value, path);
-    object.member("name", [&](const json& v, const std::string& p) { reader.string(v, p, material.name); });
-    object.member("ambient", [&](const json& v, const std::string& p) { reader.colour(v, p, material.ambient); });
-    object.member("diffuse", [&](const json& v, const std::string& p) { reader.colour(v, p, material.diffuse); });
-    object.member("specular", [&](const json& v, const std::string& p) { reader.colour(v, p, material.specular); });
-    object.member("shininess", [&](const json& v, const std::string& p) {
-        reader.numberAtLeast(v, p, 0, true, material.shininess);
-    });
-    object.member("emission", [&](const json& v, const std::string& p) { reader.colour(v, p, material.emission); });
+    readSettings(reader, object, materialSettings(), material);
     object.finish("material");
     if (material.name.empty() && object.valid()) {
         reader.fail(path + ".name", "a material needs a non-empty name");
@@ -457,13 +463,6 @@ std::string lineColumnMessage(std::string_view text, const nlohmann::json::parse
     size_t reason = what.find(": ", what.find("parse error"));
     std::string detail = reason == std::string::npos ? what : what.substr(reason + 2);
     return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": invalid JSON: " + detail;
-}
-
-json vec3Json(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
-
-template <size_t N, typename Enum>
-std::string nameOf(const char* const (&names)[N], Enum value) {
-    return std::string(names[static_cast<size_t>(value)]);
 }
 
 }  // namespace
@@ -600,48 +599,19 @@ json sceneToJson(const Scene& scene) {
     out["version"] = kFormatVersion;
     out["name"] = scene.name;
     out["description"] = scene.description;
-    const Camera& c = scene.camera;
-    out["camera"] = {{"target", vec3Json(c.target)}, {"azimuth", c.azimuth}, {"elevation", c.elevation},
-                     {"distance", c.distance}, {"fov", c.fov}};
-    const RenderSettings& r = scene.render;
-    out["render"] = {{"width", r.width},
-                     {"height", r.height},
-                     {"aa", r.aa},
-                     {"max_steps", r.maxSteps},
-                     {"max_distance", r.maxDistance},
-                     {"epsilon", r.epsilon},
-                     {"epsilon_mode", nameOf(kEpsilonModeNames, r.epsilonMode)},
-                     {"shadows", nameOf(kShadowModeNames, r.shadows)},
-                     {"shadow_steps", r.shadowSteps},
-                     {"ao_samples", r.aoSamples},
-                     {"ao_distance", r.aoDistance},
-                     {"lighting", nameOf(kLightingModelNames, r.lighting)},
-                     {"step_relaxation", r.stepRelaxation}};
-    const Environment& e = scene.environment;
-    const Ground& g = e.ground;
-    out["environment"] = {{"ambient", vec3Json(e.ambient)},
-                          {"background", vec3Json(e.background)},
-                          {"ground",
-                           {{"enabled", g.enabled},
-                            {"height", g.height},
-                            {"material", g.material},
-                            {"pattern", nameOf(kGroundPatternNames, g.pattern)},
-                            {"cell_size", g.cellSize},
-                            {"line_width", g.lineWidth},
-                            {"second_color", vec3Json(g.secondColor)}}}};
+    out["camera"] = settingsJson(cameraSettings(), scene.camera);
+    out["render"] = settingsJson(renderSettings(), scene.render);
+    json environment = settingsJson(environmentSettings(), scene.environment);
+    environment["ground"] = settingsJson(groundSettings(), scene.environment.ground);
+    out["environment"] = std::move(environment);
     json lights = json::array();
     for (const Light& l : scene.lights) {
-        lights.push_back({{"direction", vec3Json(l.direction)}, {"color", vec3Json(l.color)}, {"softness", l.softness}});
+        lights.push_back(settingsJson(lightSettings(), l));
     }
     out["lights"] = std::move(lights);
     json materials = json::array();
     for (const Material& m : scene.materials) {
-        materials.push_back({{"name", m.name},
-                             {"ambient", vec3Json(m.ambient)},
-                             {"diffuse", vec3Json(m.diffuse)},
-                             {"specular", vec3Json(m.specular)},
-                             {"shininess", m.shininess},
-                             {"emission", vec3Json(m.emission)}});
+        materials.push_back(settingsJson(materialSettings(), m));
     }
     out["materials"] = std::move(materials);
     out["root"] = nodeToJson(scene.root);

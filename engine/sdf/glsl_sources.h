@@ -10,7 +10,11 @@ namespace sdfwb::sdf {
 std::string_view glslPrelude();
 
 // The shared sources in dependency order (math, transcendental, primitives,
-// operators, material, camera, instructions, tracer), concatenated.
+// operators, material, camera, instructions, parameter blocks, tracer), concatenated.
 std::string_view glslLibrary();
+
+// The per-sample driver loop (sdf/glsl/sample_driver.glsl), pasted after the
+// generated map() and P() it calls.
+std::string_view glslSampleDriver();
 
 }  // namespace sdfwb::sdf

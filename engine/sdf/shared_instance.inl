@@ -40,6 +40,7 @@ SHARED_FN real libraryCos(real x) {
 #include "sdf/glsl/material.glsl"
 #include "sdf/glsl/camera.glsl"
 #include "sdf/glsl/instructions.glsl"
+#include "sdf/glsl/parameter_blocks.glsl"
 #include "sdf/glsl/tracer.glsl"
 
 }  // namespace SDFWB_SHARED_NS

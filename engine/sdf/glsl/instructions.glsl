@@ -3,12 +3,6 @@
 // so an instruction means the same thing in both backends. Parameters arrive as
 // the vec4 slots of the parameter buffer; layouts are listed in opcodes.h.
 
-SHARED_FN vec3 xyz(vec4 q) { return vec3(q.x, q.y, q.z); }
-
-SHARED_FN Material materialFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
-    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3));
-}
-
 // ---- Point: P[dst] = f(P[a], slots) ----
 SHARED_FN vec3 instTranslate(vec3 p, vec4 q0) { return opTranslate(p, xyz(q0)); }
 SHARED_FN vec3 instRotate(vec3 p, vec4 q0, vec4 q1, vec4 q2) { return opRotate(p, xyz(q0), xyz(q1), xyz(q2)); }

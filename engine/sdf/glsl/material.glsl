@@ -6,7 +6,30 @@ struct Material {
     vec3 specular;  // R_E
     real shininess; // alpha
     vec3 emission;  // L_E
+    real emissionStrength;  // multiplies L_E; 1 is the colour as given
 };
+
+// ---- Material: (ambient, shininess), (diffuse, 0), (specular, 0), (emission, emissionStrength) ----
+SHARED_FN Material materialFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3), q3.w);
+}
+SHARED_FN vec4 materialSlot(Material m, int i) {
+    if (i == 0) {
+        return vec4(m.ambient, m.shininess);
+    }
+    if (i == 1) {
+        return vec4(m.diffuse, real(0));
+    }
+    if (i == 2) {
+        return vec4(m.specular, real(0));
+    }
+    return vec4(m.emission, m.emissionStrength);
+}
+
+// No material: what the tracer holds before a hit.
+SHARED_FN Material noMaterial() {
+    return Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)), real(1));
+}
 
 SHARED_FN Material mixMaterial(Material a, Material b, real w) {
     if (w <= real(0)) {
@@ -17,7 +40,7 @@ SHARED_FN Material mixMaterial(Material a, Material b, real w) {
     }
     return Material(lerp3s(a.ambient, b.ambient, w), lerp3s(a.diffuse, b.diffuse, w),
                     lerp3s(a.specular, b.specular, w), lerpr(a.shininess, b.shininess, w),
-                    lerp3s(a.emission, b.emission, w));
+                    lerp3s(a.emission, b.emission, w), lerpr(a.emissionStrength, b.emissionStrength, w));
 }
 
 // A point of the scene's field. `d` is the distance estimate the tracer tests
@@ -61,7 +84,7 @@ SHARED_FN Material groundMaterial(Material base, vec3 worldPoint, int pattern, r
         useSecond = du < halfLine || dv < halfLine;
     }
     if (useSecond) {
-        return Material(secondColor, secondColor, base.specular, base.shininess, base.emission);
+        return Material(secondColor, secondColor, base.specular, base.shininess, base.emission, base.emissionStrength);
     }
     return base;
 }

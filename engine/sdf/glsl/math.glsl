@@ -4,6 +4,9 @@
 // Built-ins whose bits differ between llvmpipe and GLM (dot, normalize, length,
 // mix, smoothstep, round) are replaced by versions with a fixed evaluation order.
 
+// The first three components of a parameter slot.
+SHARED_FN vec3 xyz(vec4 q) { return vec3(q.x, q.y, q.z); }
+
 SHARED_FN real dot2(vec2 a, vec2 b) { return a.x * b.x + a.y * b.y; }
 SHARED_FN real dot3(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 SHARED_FN real length2d(vec2 a) { return sqrt(dot2(a, a)); }

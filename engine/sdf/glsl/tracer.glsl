@@ -1,15 +1,6 @@
 // The per-sample tracer as a state machine (thesis, sections 2.1-2.2).
-// A backend drives it with one loop and one evaluation of the scene per iteration:
-//
-//   TraceState s = traceBegin(ray);
-//   while (s.phase != PHASE_DONE) {
-//       Light light = lights[lightIndex(s)];
-//       if (traceNeedsSample(s, settings)) field = map(tracePoint(s, light, settings));
-//       s = traceAdvance(s, field, light, settings);
-//   }
-//
-// so the GLSL backend has a single call site of map() (compile cost grows with call
-// sites, see docs/toolchain-notes.md) and both backends share every formula.
+// sample_driver.glsl drives it, the same code in both backends: one loop, one
+// evaluation of the scene per iteration, at most traceIterationBound iterations.
 // Phases: primary march, 4 tetrahedron normal samples, M ambient-occlusion
 // samples, then per light either a shadow march or (shadows off) a direct shade.
 
@@ -29,28 +20,6 @@ const int SHADOW_IMPROVED = 3;
 
 const int LIGHTING_BLINN_PHONG = 0;
 const int LIGHTING_PHONG = 1;
-
-struct Light {
-    vec3 direction;  // unit, towards the light
-    vec3 color;      // S_i
-    real softness;   // k
-};
-
-struct TraceSettings {
-    int maxSteps;
-    real maxDistance;
-    real epsilon;            // absolute hit epsilon
-    real epsilonPerDistance; // added footprint term: epsilon(t) = max(epsilon, epsilonPerDistance * t)
-    int shadowMode;
-    int shadowSteps;
-    int aoSamples;           // M; 0 disables ambient occlusion
-    real aoDistance;         // distance covered by the M samples along the normal
-    int lightingModel;
-    real relaxation;         // omega of over-relaxed primary steps, in [1, 2); 1 is plain sphere tracing
-    int lightCount;
-    vec3 ambientLight;       // L_A
-    vec3 background;
-};
 
 struct TraceState {
     int phase;
@@ -81,7 +50,7 @@ struct TraceState {
 };
 
 SHARED_FN TraceState traceBegin(Ray ray) {
-    Material none = Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)));
+    Material none = noMaterial();
     return TraceState(PHASE_MARCH, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(0)));
@@ -181,7 +150,7 @@ SHARED_FN TraceState beginLight(TraceState s, TraceSettings settings) {
 
 // L = L_A + L_E + sum_i S_i (R_A + NL R_D + NL R_E spec^alpha) shadow_i ao  (thesis, Alg. 14)
 SHARED_FN TraceState beginShading(TraceState s, TraceSettings settings) {
-    s.color = settings.ambientLight + s.material.emission;
+    s.color = settings.ambientLight + s.material.emission * s.material.emissionStrength;
     s.light = 0;
     return beginLight(s, settings);
 }

@@ -1,0 +1,89 @@
+// The parameter buffer's blocks: the scene-wide ones at fixed slots (trace
+// settings, camera, MAX_LIGHTS lights), then the materials (their packer and
+// unpacker are in material.glsl) and the instructions' parameters. The structs
+// of the scene-wide blocks are declared here, beside their layout. Each block has one unpacker, read by both backends,
+// and one packer, with which the compiler writes it (in double precision); a
+// test checks that each undoes the other and that every struct's constructor
+// calls pass every member, so a field cannot be missing from one layer.
+
+struct Light {
+    vec3 direction;  // unit, towards the light
+    vec3 color;      // S_i
+    real softness;   // k
+};
+
+struct TraceSettings {
+    int maxSteps;
+    real maxDistance;
+    real epsilon;            // absolute hit epsilon
+    real epsilonPerDistance; // added footprint term: epsilon(t) = max(epsilon, epsilonPerDistance * t)
+    int shadowMode;
+    int shadowSteps;
+    int aoSamples;           // M; 0 disables ambient occlusion
+    real aoDistance;         // distance covered by the M samples along the normal
+    int lightingModel;
+    real relaxation;         // omega of over-relaxed primary steps, in [1, 2); 1 is plain sphere tracing
+    int lightCount;
+    real exposure;           // multiplies the final linear colour
+    vec3 ambientLight;       // L_A
+    vec3 background;
+};
+
+const int MAX_LIGHTS = 8;
+const int TRACE_SLOT = 0;
+const int TRACE_SLOTS = 5;
+const int CAMERA_SLOT = 5;      // TRACE_SLOT + TRACE_SLOTS
+const int CAMERA_SLOTS = 4;
+const int LIGHT_SLOT = 9;       // CAMERA_SLOT + CAMERA_SLOTS
+const int LIGHT_SLOTS = 2;      // per light; unused lights are zero
+const int MATERIAL_SLOT = 25;   // LIGHT_SLOT + MAX_LIGHTS * LIGHT_SLOTS: the default material
+const int MATERIAL_SLOTS = 4;
+
+// ---- TraceSettings: (maxSteps, maxDistance, epsilon, epsilonPerDistance),
+// (shadowMode, shadowSteps, aoSamples, aoDistance), (lightingModel, relaxation,
+// lightCount, exposure), (ambientLight, 0), (background, 0) ----
+SHARED_FN TraceSettings traceSettingsFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4) {
+    return TraceSettings(int(q0.x), q0.y, q0.z, q0.w, int(q1.x), int(q1.y), int(q1.z), q1.w, int(q2.x), q2.y,
+                         int(q2.z), q2.w, xyz(q3), xyz(q4));
+}
+SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
+    if (i == 0) {
+        return vec4(real(s.maxSteps), s.maxDistance, s.epsilon, s.epsilonPerDistance);
+    }
+    if (i == 1) {
+        return vec4(real(s.shadowMode), real(s.shadowSteps), real(s.aoSamples), s.aoDistance);
+    }
+    if (i == 2) {
+        return vec4(real(s.lightingModel), s.relaxation, real(s.lightCount), s.exposure);
+    }
+    if (i == 3) {
+        return vec4(s.ambientLight, real(0));
+    }
+    return vec4(s.background, real(0));
+}
+
+// ---- Camera: (origin, tanHalfFov), (forward, 0), (right, 0), (up, 0) ----
+SHARED_FN Camera cameraFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+    return Camera(xyz(q0), xyz(q1), xyz(q2), xyz(q3), q0.w);
+}
+SHARED_FN vec4 cameraSlot(Camera c, int i) {
+    if (i == 0) {
+        return vec4(c.origin, c.tanHalfFov);
+    }
+    if (i == 1) {
+        return vec4(c.forward, real(0));
+    }
+    if (i == 2) {
+        return vec4(c.right, real(0));
+    }
+    return vec4(c.up, real(0));
+}
+
+// ---- Light: (direction, softness), (color, 0) ----
+SHARED_FN Light lightFromSlots(vec4 q0, vec4 q1) { return Light(xyz(q0), xyz(q1), q0.w); }
+SHARED_FN vec4 lightSlot(Light l, int i) {
+    if (i == 0) {
+        return vec4(l.direction, l.softness);
+    }
+    return vec4(l.color, real(0));
+}

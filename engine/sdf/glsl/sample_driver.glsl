@@ -1,0 +1,44 @@
+// The per-sample driver loop, the same code in both backends, bound included.
+// It needs two things from its backend: P(slot), a slot of the parameter
+// buffer, and map(p), the scene's field. GLSL: the generated functions before
+// it; C++: members of the struct this file is included in (cpu/interpreter.inl).
+// One call site of map() (compile cost grows with call sites, see
+// docs/toolchain-notes.md).
+
+SHARED_FN TraceSettings sceneTraceSettings() {
+    return traceSettingsFromSlots(P(TRACE_SLOT), P(TRACE_SLOT + 1), P(TRACE_SLOT + 2), P(TRACE_SLOT + 3),
+                                  P(TRACE_SLOT + 4));
+}
+
+SHARED_FN Camera sceneCamera() {
+    return cameraFromSlots(P(CAMERA_SLOT), P(CAMERA_SLOT + 1), P(CAMERA_SLOT + 2), P(CAMERA_SLOT + 3));
+}
+
+// Light `index` of the table; an index past the scene's lights reads a zero
+// light, which no phase uses (beginLight ends shading at lightCount).
+SHARED_FN Light sceneLight(int index) {
+    int slot = LIGHT_SLOT + LIGHT_SLOTS * clamp(index, 0, MAX_LIGHTS - 1);
+    return lightFromSlots(P(slot), P(slot + 1));
+}
+
+// One sub-sample at (px, py) pixels from the bottom-left corner of a
+// width x height image. The loop ends at PHASE_DONE; traceIterationBound caps
+// it for both backends alike (llvmpipe's limiter, docs/toolchain-notes.md).
+SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
+    TraceSettings settings = sceneTraceSettings();
+    TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
+    Sample field = shapeSample(real(0), s.material);
+    int limit = traceIterationBound(settings);
+    for (int i = 0; i < limit; ++i) {
+        if (s.phase == PHASE_DONE) {
+            break;
+        }
+        Light light = sceneLight(lightIndex(s));
+        if (traceNeedsSample(s)) {
+            field = map(tracePoint(s, light, settings));
+        }
+        s = traceAdvance(s, field, light, settings);
+    }
+    s.color = s.color * settings.exposure;
+    return s;
+}
