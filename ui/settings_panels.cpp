@@ -17,6 +17,7 @@ void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
     };
     ImGui::PushItemWidth(-130);
     for (const scene::Setting<scene::RenderSettings>& row : scene::renderSettings()) {
+        if (row.key == "step_relaxation") continue;  // the quality section edits it (ui/quality_panel.cpp)
         // in pixel mode epsilon counts sub-sample footprints: drag by hundredths
         bool pixels = row.key == "epsilon" && r.epsilonMode == scene::EpsilonMode::Pixel;
         set(settingWidget(row, r, pixels ? 0.01 : 0.0));
