@@ -15,6 +15,10 @@ namespace sdfwb::scene {
 inline constexpr std::string_view kFormatTag = "sdf-workbench-scene";
 inline constexpr int kFormatVersion = 1;
 
+// How deep a node tree may nest, the root being level 1: generated scenes
+// chain a thousand transforms; every tree walk is bounded by this.
+inline constexpr int kMaxNodeDepth = 1024;
+
 struct Node {
     NodeKind kind = NodeKind::Union;
     std::string name;

@@ -7,6 +7,8 @@
 #include <type_traits>
 
 #include "io/atomic_file.h"
+#include "io/quoted_text.h"
+#include "scene/json_text.h"
 #include "scene/settings_table.h"
 
 namespace sdfwb::scene {
@@ -30,7 +32,9 @@ class Reader {
 public:
     std::vector<std::string> problems;
 
-    void fail(const std::string& path, const std::string& reason) { problems.push_back(path + ": " + reason); }
+    void fail(const std::string& path, const std::string& reason) {
+        problems.push_back(abbreviatedPath(path) + ": " + reason);
+    }
 
     bool number(const json& value, const std::string& path, double& out) {
         if (!value.is_number()) {
@@ -134,7 +138,7 @@ public:
             }
             list += (i ? ", " : "") + std::string(names[i]);
         }
-        fail(path, "must be one of " + list + " (got \"" + s + "\")");
+        fail(path, "must be one of " + list + " (got " + io::quoted(s) + ")");
         return false;
     }
 };
@@ -176,7 +180,7 @@ public:
                 for (const std::string& k : orderedKnown_()) {
                     list += (list.empty() ? "" : ", ") + k;
                 }
-                reader_.fail(pathOf(it.key()), "unknown field (" + std::string(what) + " has: " + list + ")");
+                reader_.fail(pathOf(io::escapedExcerpt(it.key())), "unknown field (" + std::string(what) + " has: " + list + ")");
             }
         }
     }
@@ -317,8 +321,14 @@ FieldValue readFieldValue(Reader& reader, const FieldSpec& field, const json& va
     return result;
 }
 
-Node readNode(Reader& reader, const json& value, const std::string& path) {
+// `depth` is the node's level, the root being 1; the reader recurses, so the
+// depth is checked before the children are read.
+Node readNode(Reader& reader, const json& value, const std::string& path, int depth) {
     Node node;
+    if (depth > kMaxNodeDepth) {
+        reader.fail(path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth) + " levels");
+        return node;
+    }
     if (!value.is_object()) {
         reader.fail(path, "must be an object");
         return node;
@@ -334,7 +344,7 @@ Node readNode(Reader& reader, const json& value, const std::string& path) {
         for (const KindSpec& k : allKinds()) {
             list += (list.empty() ? "" : ", ") + std::string(k.name);
         }
-        reader.fail(path + ".kind", "unknown node kind \"" + kindIt->get<std::string>() + "\" (known: " + list + ")");
+        reader.fail(path + ".kind", "unknown node kind " + io::quoted(kindIt->get<std::string>()) + " (known: " + list + ")");
         return node;
     }
     node = Node::make(spec->kind);
@@ -354,7 +364,7 @@ Node readNode(Reader& reader, const json& value, const std::string& path) {
                 return;
             }
             for (size_t i = 0; i < v.size(); ++i) {
-                node.children.push_back(readNode(reader, v[i], p + "[" + std::to_string(i) + "]"));
+                node.children.push_back(readNode(reader, v[i], p + "[" + std::to_string(i) + "]", depth + 1));
             }
         });
     }
@@ -424,7 +434,7 @@ void checkMaterialReferences(Reader& reader, const Scene& scene, const Node& nod
     if (index >= 0) {
         const std::string& name = std::get<std::string>(node.fields[static_cast<size_t>(index)]);
         if (!name.empty() && !scene.findMaterial(name)) {
-            reader.fail(path + ".material", "no material named \"" + name + "\" in materials");
+            reader.fail(path + ".material", "no material named " + io::quoted(name) + " in materials");
         }
     }
     for (size_t i = 0; i < node.children.size(); ++i) {
@@ -442,34 +452,25 @@ void checkVersion(Reader& reader, const json& value) {
     auto version = value.find("version");
     if (version == value.end() || !version->is_number_integer()) {
         reader.fail("version", "must be a whole number (this build reads version " + std::to_string(kFormatVersion) + ")");
-    } else if (version->get<int>() > kFormatVersion || version->get<int>() < 1) {
-        reader.fail("version", "unsupported version " + std::to_string(version->get<int>()) +
-                                   " (this build reads versions 1 to " + std::to_string(kFormatVersion) + ")");
+        return;
     }
-}
-
-std::string lineColumnMessage(std::string_view text, const nlohmann::json::parse_error& error) {
-    size_t line = 1, column = 1;
-    size_t end = std::min(error.byte == 0 ? 0 : error.byte - 1, text.size());
-    for (size_t i = 0; i < end; ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
+    // Read at the width the JSON holds it: 4294967297 must not pass as 1.
+    std::string number = version->dump();
+    bool supported = version->is_number_unsigned() ? version->get<std::uint64_t>() >= 1 &&
+                                                        version->get<std::uint64_t>() <= kFormatVersion
+                                                  : version->get<std::int64_t>() >= 1 &&
+                                                        version->get<std::int64_t>() <= kFormatVersion;
+    if (!supported) {
+        reader.fail("version", "unsupported version " + number + " (this build reads versions 1 to " +
+                                   std::to_string(kFormatVersion) + ")");
     }
-    std::string what = error.what();
-    size_t reason = what.find(": ", what.find("parse error"));
-    std::string detail = reason == std::string::npos ? what : what.substr(reason + 2);
-    return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": invalid JSON: " + detail;
 }
 
 }  // namespace
 
 Node nodeFromJson(const json& value, const std::string& path) {
     Reader reader;
-    Node node = readNode(reader, value, path);
+    Node node = readNode(reader, value, path, 1);
     if (!reader.problems.empty()) {
         throw SceneError(reader.problems);
     }
@@ -516,17 +517,17 @@ Scene sceneFromJson(const json& value) {
             std::string itemPath = p + "[" + std::to_string(i) + "]";
             Material m = readMaterial(reader, v[i], itemPath);
             if (!m.name.empty() && !names.insert(m.name).second) {
-                reader.fail(itemPath + ".name", "duplicate material name \"" + m.name + "\"");
+                reader.fail(itemPath + ".name", "duplicate material name " + io::quoted(m.name));
             }
             scene.materials.push_back(std::move(m));
         }
     });
-    object.member("root", [&](const json& v, const std::string& p) { scene.root = readNode(reader, v, p); });
+    object.member("root", [&](const json& v, const std::string& p) { scene.root = readNode(reader, v, p, 1); });
     object.finish("a scene");
     checkMaterialReferences(reader, scene, scene.root, "root");
     if (!scene.environment.ground.material.empty() && !scene.findMaterial(scene.environment.ground.material)) {
         reader.fail("environment.ground.material",
-                    "no material named \"" + scene.environment.ground.material + "\" in materials");
+                    "no material named " + io::quoted(scene.environment.ground.material) + " in materials");
     }
     if (!reader.problems.empty()) {
         throw SceneError(reader.problems);
@@ -537,13 +538,9 @@ Scene sceneFromJson(const json& value) {
 Scene parseScene(std::string_view text) {
     json value;
     try {
-        value = json::parse(text.begin(), text.end());
-    } catch (const nlohmann::json::parse_error& error) {
-        throw SceneError({lineColumnMessage(text, error)});
-    } catch (const nlohmann::json::out_of_range& error) {
-        // number overflow: JSON has no infinities, a finite number is required
-        std::string what = error.what();
-        throw SceneError({"invalid JSON: " + what.substr(what.find("] ") + 2) + " (numbers must be finite)"});
+        value = parseStrictJson(text);
+    } catch (const JsonTextError& error) {
+        throw SceneError({error.what()});
     }
     return sceneFromJson(value);
 }
@@ -551,7 +548,7 @@ Scene parseScene(std::string_view text) {
 Scene loadSceneFile(const std::filesystem::path& path) {
     std::string text;
     try {
-        text = io::readTextFile(path);
+        text = io::readTextFile(path, kMaxSceneFileBytes);
     } catch (const std::exception& error) {
         throw SceneError({error.what()});
     }

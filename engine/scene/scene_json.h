@@ -28,6 +28,10 @@ private:
 // Throws SceneError.
 Scene parseScene(std::string_view jsonText);
 Scene sceneFromJson(const nlohmann::ordered_json& json);
+// Scene files larger than this are refused before they are read (the parsed
+// document takes several times the file's size in memory).
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t(64) << 20;
+
 // Throws SceneError whose problems start with the file name.
 Scene loadSceneFile(const std::filesystem::path& path);
 

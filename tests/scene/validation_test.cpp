@@ -60,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"unary_without_child", document(R"({"kind": "translate", "offset": [1, 0, 0]})"),
                   "root.children: translate needs exactly 1 child (got 0)"},
         ErrorCase{"infinite_number", document(R"({"kind": "sphere", "radius": 1e400})"),
-                  "invalid JSON: number overflow parsing '1e400' (numbers must be finite)"},
+                  "line 1, column 86: invalid JSON: number overflow \"1e400\" (numbers must be finite)"},
         ErrorCase{"missing_material", document(R"({"kind": "sphere", "material": "gold"})"),
                   "root.material: no material named \"gold\" in materials"},
         ErrorCase{"too_many_lights", document(R"({"kind": "sphere"})", R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}, {}], )"),
