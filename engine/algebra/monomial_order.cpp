@@ -5,6 +5,13 @@
 
 namespace sdfwb::algebra {
 
+MonomialOrder::MonomialOrder(Kind kind) : kind_(kind) {}
+MonomialOrder::~MonomialOrder() = default;
+MonomialOrder::MonomialOrder(const MonomialOrder&) = default;
+MonomialOrder::MonomialOrder(MonomialOrder&&) noexcept = default;
+MonomialOrder& MonomialOrder::operator=(const MonomialOrder&) = default;
+MonomialOrder& MonomialOrder::operator=(MonomialOrder&&) noexcept = default;
+
 MonomialOrder MonomialOrder::lex() { return MonomialOrder(Kind::lex); }
 MonomialOrder MonomialOrder::deglex() { return MonomialOrder(Kind::deglex); }
 MonomialOrder MonomialOrder::degrevlex() { return MonomialOrder(Kind::degrevlex); }

@@ -23,6 +23,15 @@ class MonomialOrder {
   /// A block of `size` consecutive variables ordered by `order`.
   struct Block;
 
+  // Out of line, as is the constructor: clang instantiates ~vector<Block>
+  // where they are defined (and for the default argument below), and Block
+  // is incomplete inside this class.
+  ~MonomialOrder();
+  MonomialOrder(const MonomialOrder&);
+  MonomialOrder(MonomialOrder&&) noexcept;
+  MonomialOrder& operator=(const MonomialOrder&);
+  MonomialOrder& operator=(MonomialOrder&&) noexcept;
+
   static MonomialOrder lex();
   static MonomialOrder deglex();
   static MonomialOrder degrevlex();
@@ -67,7 +76,7 @@ class MonomialOrder {
   friend bool operator==(const MonomialOrder& a, const MonomialOrder& b);
 
  private:
-  explicit MonomialOrder(Kind kind) : kind_(kind) {}
+  explicit MonomialOrder(Kind kind);
 
   Kind kind_;
   std::vector<std::int64_t> weights_;  // weighted only

@@ -234,6 +234,9 @@ NodeId power(Graph& graph, NodeId base, NodeId exponent, SourceLocation exponent
     if (abs(n) > kMaxIntegerExponent) {
       throw Error(exponentWhere, "the exponent is too large (at most " + std::to_string(kMaxIntegerExponent) + ")");
     }
+    if (n < 0 && graph.isConstant(base, 0)) {
+      throw Error(exponentWhere, "division by zero: 0 to a negative power");
+    }
     return graph.powInteger(base, n.get_si());
   }
   return graph.powGuarded(base, exponent);

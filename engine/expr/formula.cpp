@@ -75,6 +75,9 @@ ParametricEquations compileParametricEquations(std::string_view source) {
     if (isCoordinate(name)) {
       throw Error(where, "'" + name + "' is a coordinate: the right-hand sides may use only parameters");
     }
+    if (g.variables().size() >= kMaxVariables) {
+      throw Error(where, "more than " + std::to_string(kMaxVariables) + " parameters");
+    }
     return Value::scalar(g.variable(g.declareVariable(name)));
   });
   for (const Statement& s : program.statements) {
@@ -106,6 +109,10 @@ ExpressionList compileExpressionList(std::string_view source, std::span<const st
   ExpressionList result;
   Graph& g = result.graph;
   Lowerer lowerer(g, rejectFreeNames("the variables are the ones listed"));
+  if (variables.size() > kMaxVariables) {
+    throw std::invalid_argument(std::to_string(variables.size()) + " variables (at most " +
+                                std::to_string(kMaxVariables) + ")");
+  }
   std::set<std::string> seen;
   for (const std::string& name : variables) {
     if (const std::string problem = identifierProblem(name); !problem.empty()) {

@@ -42,6 +42,10 @@ struct CoordinateEquation {
 // equations are returned in the order x, y, z. The right-hand sides use
 // parameters: any identifier other than x, y, z, declared as graph variables
 // in order of first appearance.
+// Variables of an expression list and parameters of a parametrization, at
+// most: every exact monomial stores one exponent per variable.
+inline constexpr std::size_t kMaxVariables = 256;
+
 struct ParametricEquations {
   Graph graph;
   std::vector<CoordinateEquation> equations;

@@ -13,11 +13,42 @@ namespace {
 
 unsigned at(const std::vector<unsigned>& powers, std::size_t i) { return i < powers.size() ? powers[i] : 0; }
 
+void checkDegree(std::uint64_t degree) {
+  if (degree > kMaxExpandedDegree) {
+    throw TooLargeToExpand("the expanded polynomial would have degree " + std::to_string(degree) + " (at most " +
+                           std::to_string(kMaxExpandedDegree) + ")");
+  }
+}
+
+// Machine words in the coefficients, numerators and denominators.
+std::uint64_t coefficientLimbs(const Polynomial& p) {
+  std::uint64_t limbs = 0;
+  for (const algebra::Term& t : p.terms()) {
+    limbs += mpz_size(t.coefficient.get_num_mpz_t()) + mpz_size(t.coefficient.get_den_mpz_t());
+  }
+  return limbs;
+}
+
 }  // namespace
 
+Polynomial FractionArithmetic::product(const Polynomial& a, const Polynomial& b) const {
+  checkDegree(a.total_degree() + b.total_degree());
+  // A term product costs a monomial sum and a rational product: count both,
+  // the latter by limb products (large binomial coefficients dominate (x+1)^n).
+  work_ += static_cast<std::uint64_t>(a.term_count()) * b.term_count() +
+           coefficientLimbs(a) * coefficientLimbs(b) / 16;
+  if (work_ > kMaxExpansionWork) {
+    throw TooLargeToExpand("the formula is too large to expand exactly (more than " +
+                           std::to_string(kMaxExpansionWork) + " units of work: term and coefficient products)");
+  }
+  return a * b;
+}
+
+// Factor powers multiply one factor at a time, so that each product is checked.
 Polynomial FractionArithmetic::withFactors(Polynomial n, const std::vector<unsigned>& powers) const {
   for (std::size_t i = 0; i < powers.size(); ++i) {
-    if (powers[i] > 0) n *= algebra::pow(factors_[i], powers[i]);
+    checkDegree(n.total_degree() + std::uint64_t(powers[i]) * factors_[i].total_degree());
+    for (unsigned k = 0; k < powers[i]; ++k) n = product(n, factors_[i]);
   }
   return n;
 }
@@ -43,8 +74,11 @@ Fraction FractionArithmetic::add(const Fraction& a, const Fraction& b) const {
 Fraction FractionArithmetic::multiply(const Fraction& a, const Fraction& b) const {
   if (a.numerator.is_zero() || b.numerator.is_zero()) return constant(0);
   std::vector<unsigned> powers(std::max(a.powers.size(), b.powers.size()), 0);
-  for (std::size_t i = 0; i < powers.size(); ++i) powers[i] = at(a.powers, i) + at(b.powers, i);
-  return {a.numerator * b.numerator, powers};
+  for (std::size_t i = 0; i < powers.size(); ++i) {
+    checkDegree(std::uint64_t(at(a.powers, i)) + at(b.powers, i));
+    powers[i] = at(a.powers, i) + at(b.powers, i);
+  }
+  return {product(a.numerator, b.numerator), powers};
 }
 
 std::pair<Rational, std::vector<unsigned>> FractionArithmetic::factorize(Polynomial p) {

@@ -10,12 +10,29 @@
 // reduce() is therefore the lcm of the denominators the formula divides by,
 // with common factors cancelled where a factor divides the numerator.
 
+#include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "algebra/polynomial.h"
 
 namespace sdfwb::expr {
+
+// Expanding products can take unbounded time and memory ((x+y+1)^600) and
+// exponents must stay far from their type's range ((x^65536)^65536 would wrap
+// at 2^32): every product is checked before it is computed.
+inline constexpr std::uint64_t kMaxExpandedDegree = std::uint64_t(1) << 20;
+// Work over one conversion, a few seconds: one unit per term-by-term product
+// plus one per 16 products of coefficient limbs.
+inline constexpr std::uint64_t kMaxExpansionWork = 20'000'000;
+
+// Thrown by FractionArithmetic when a product would exceed either limit; the
+// graph conversion reports it with the location of the operation.
+class TooLargeToExpand : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct Fraction {
   algebra::Polynomial numerator;
@@ -45,6 +62,8 @@ class FractionArithmetic {
   std::pair<algebra::Polynomial, algebra::Polynomial> reduce(Fraction a) const;
 
  private:
+  // a * b after checking the degree and the work left (throws TooLargeToExpand).
+  algebra::Polynomial product(const algebra::Polynomial& a, const algebra::Polynomial& b) const;
   // Multiplies n by prod(factor_i ^ powers_i).
   algebra::Polynomial withFactors(algebra::Polynomial n, const std::vector<unsigned>& powers) const;
   // Splits p (nonzero) into a rational constant times a product of factors,
@@ -53,6 +72,7 @@ class FractionArithmetic {
 
   algebra::RingPtr ring_;
   std::vector<algebra::Polynomial> factors_;
+  mutable std::uint64_t work_ = 0;  // term products so far
 };
 
 }  // namespace sdfwb::expr

@@ -23,7 +23,7 @@ Fraction GraphToFractions::convert(NodeId root, SourceLocation rootWhere) {
     }
     return *values[id];
   };
-  for (const NodeId id : dependencies(graph_, root, options_.isLeaf)) {
+  for (const NodeId id : dependencies(graph_, root, options_.isLeaf)) try {
     if (options_.isLeaf && options_.isLeaf(id)) {
       values[id] = options_.leaf(id);
       continue;
@@ -52,6 +52,8 @@ Fraction GraphToFractions::convert(NodeId root, SourceLocation rootWhere) {
       }
       default: throw Error(graph_.origin(id).where, notRational(graph_.origin(id)));
     }
+  } catch (const TooLargeToExpand& error) {
+    throw Error(graph_.origin(id).where, error.what());
   }
   if (!values[root]) {
     const std::string& name = graph_.variables()[graph_.node(root).index];

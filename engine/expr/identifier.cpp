@@ -1,6 +1,7 @@
 #include "expr/identifier.h"
 
 #include "expr/builtins.h"
+#include "io/quoted_text.h"
 
 namespace sdfwb::expr {
 namespace {
@@ -11,7 +12,7 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 }  // namespace
 
 std::string identifierProblem(std::string_view name) {
-  const std::string quoted = "'" + std::string(name) + "'";
+  const std::string quoted = "'" + io::escapedExcerpt(name) + "'";
   if (name.empty()) return "a name cannot be empty";
   if (!isLetter(name.front())) return quoted + " does not start with a letter";
   for (char c : name) {

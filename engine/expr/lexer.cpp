@@ -1,5 +1,6 @@
 #include "expr/lexer.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace sdfwb::expr {
@@ -12,6 +13,10 @@ bool isNameChar(char c) { return isNameStart(c) || isDigit(c); }
 // Decimal exponents beyond this are refused: 1e1000000 would make GMP build a
 // million-digit integer before anything could check it.
 constexpr long kMaxDecimalExponent = 1000;
+// Longer literals and names are refused: a literal of many thousand digits
+// makes exact arithmetic (Groebner bases) crawl, and names are quoted in messages.
+constexpr std::size_t kMaxNumberDigits = 100;
+constexpr std::size_t kMaxNameLength = 100;
 
 class Lexer {
  public:
@@ -33,6 +38,10 @@ class Lexer {
       } else if (isNameStart(c)) {
         const std::size_t start = pos_;
         while (pos_ < source_.size() && isNameChar(source_[pos_])) advance();
+        if (pos_ - start > kMaxNameLength) {
+          throw Error(token.where, "a name of " + std::to_string(pos_ - start) + " characters (at most " +
+                                       std::to_string(kMaxNameLength) + ")");
+        }
         token.text = std::string(source_.substr(start, pos_ - start));
         token.kind = token.text == "let" ? TokenKind::Let : TokenKind::Identifier;
       } else {
@@ -127,6 +136,11 @@ class Lexer {
       scale += negative ? -exponent : exponent;
     }
     token.text = std::string(source_.substr(start, pos_ - start));
+    const std::size_t significant = digits.size() - std::min(digits.size(), digits.find_first_not_of('0'));
+    if (significant > kMaxNumberDigits) {
+      throw Error(token.where, "a number of " + std::to_string(significant) + " digits (at most " +
+                                   std::to_string(kMaxNumberDigits) + ")");
+    }
     mpz_class mantissa(digits, 10);
     mpz_class power;
     mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));

@@ -27,6 +27,31 @@ class Parser {
   const Token& next() { return tokens_[pos_ < tokens_.size() - 1 ? pos_++ : pos_]; }
   [[noreturn]] void fail(const std::string& message) const { throw Error(peek().where, message); }
 
+  // Every recursive rule and every operator of a chain enters one level; the
+  // syntax tree is then never deeper than kMaxExpressionDepth.
+  // Levels entered by one rule (one for a recursive rule, one per operator of a
+  // chain), left when the rule returns.
+  class Levels {
+   public:
+    explicit Levels(Parser& parser, int count = 1) : parser_(parser) { enter(count); }
+    ~Levels() { parser_.depth_ -= count_; }
+    Levels(const Levels&) = delete;
+    Levels& operator=(const Levels&) = delete;
+
+    void enter(int count = 1) {
+      count_ += count;
+      parser_.depth_ += count;
+      if (parser_.depth_ > kMaxExpressionDepth) {
+        parser_.fail("the formula nests deeper than " + std::to_string(kMaxExpressionDepth) +
+                     " levels (parentheses, signs and chained operators)");
+      }
+    }
+
+   private:
+    Parser& parser_;
+    int count_ = 0;
+  };
+
   Statement statement() {
     Statement s;
     s.where = peek().where;
@@ -63,24 +88,29 @@ class Parser {
   }
 
   std::unique_ptr<Expr> expression() {
+    Levels levels(*this);
     auto lhs = term();
     while (at(TokenKind::Plus) || at(TokenKind::Minus)) {
       const Token& op = next();
+      levels.enter();
       lhs = binary(op.text[0], op.where, std::move(lhs), term());
     }
     return lhs;
   }
 
   std::unique_ptr<Expr> term() {
+    Levels levels(*this, 0);
     auto lhs = unary();
     while (at(TokenKind::Star) || at(TokenKind::Slash)) {
       const Token& op = next();
+      levels.enter();
       lhs = binary(op.text[0], op.where, std::move(lhs), unary());
     }
     return lhs;
   }
 
   std::unique_ptr<Expr> unary() {
+    const Levels level(*this);
     if (at(TokenKind::Plus)) {
       next();
       return unary();
@@ -103,8 +133,10 @@ class Parser {
   }
 
   std::unique_ptr<Expr> postfix() {
+    Levels levels(*this, 0);
     auto e = primary();
     while (at(TokenKind::Dot)) {
+      levels.enter();
       auto member = std::make_unique<Expr>();
       member->kind = Expr::Kind::Component;
       member->where = next().where;
@@ -161,10 +193,17 @@ class Parser {
 
   std::vector<Token> tokens_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace
 
-Program parse(std::string_view source) { return Parser(tokenize(source)).program(); }
+Program parse(std::string_view source) {
+  if (source.size() > kMaxFormulaLength) {
+    throw Error({}, "the formula is " + std::to_string(source.size()) + " characters long (at most " +
+                        std::to_string(kMaxFormulaLength) + ")");
+  }
+  return Parser(tokenize(source)).program();
+}
 
 }  // namespace sdfwb::expr

@@ -14,13 +14,23 @@
 // Which statements a formula may hold (one final expression, equations, ...)
 // is checked by the compiler (formula.h), not here.
 
+#include <cstddef>
 #include <string_view>
 
 #include "expr/ast.h"
 
 namespace sdfwb::expr {
 
-// Throws Error, e.g. "column 7: expected ')' after function arguments".
+// Limits that keep every later stage (typing, derivatives, code generation)
+// bounded: they all walk the syntax tree recursively.
+inline constexpr std::size_t kMaxFormulaLength = std::size_t(1) << 20;  // characters
+// Nesting of the syntax tree: parentheses, unary signs, and each operator of a
+// chain (a + b + c nests two deep), so it also bounds sums of many terms.
+inline constexpr int kMaxExpressionDepth = 2000;
+
+// Throws Error, e.g. "column 7: expected ')' after function arguments", also
+// for a source longer than kMaxFormulaLength or nested deeper than
+// kMaxExpressionDepth.
 Program parse(std::string_view source);
 
 }  // namespace sdfwb::expr
