@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "image/encoding.h"
@@ -15,6 +16,22 @@ std::string lowerExtension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext;
+}
+
+// Some writers report success on a full disk and leave a truncated file (the
+// PNG writer does): only a file that decodes completely may replace the old one.
+void checkReadsBack(const std::filesystem::path& temporary, const std::filesystem::path& path, const Image& image) {
+    auto in = OIIO::ImageInput::open(temporary.string());
+    bool ok = in && in->spec().width == image.width && in->spec().height == image.height;
+    if (ok) {
+        std::vector<float> pixels(image.pixelCount() * static_cast<std::size_t>(in->spec().nchannels));
+        ok = in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
+    }
+    if (!ok) {
+        std::string reason = in ? in->geterror() : OIIO::geterror();
+        throw std::runtime_error("cannot write " + path.string() + ": the written file does not read back" +
+                                 (reason.empty() ? std::string(" (is the disk full?)") : ": " + reason));
+    }
 }
 
 }  // namespace
@@ -31,12 +48,28 @@ void checkWritableFormat(const std::filesystem::path& path) {
 }
 
 void writeImage(const std::filesystem::path& path, const Image& image, const Metadata& metadata) {
+    io::StagedWrites writes;
+    stageImage(writes, path, image, metadata);
+    writes.commit();
+}
+
+void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, const Image& image,
+                const Metadata& metadata) {
     checkWritableFormat(path);
-    io::writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    writes.stage(path, [&](const std::filesystem::path& temporary) {
         auto out = OIIO::ImageOutput::create(temporary.string());
         if (!out) {
             throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
         }
+        // Encoded in memory where the writer allows it: libjpeg exits the
+        // process on a write error, and libpng can report success on a full
+        // disk; the bytes are then written, and checked, here. Not TIFF:
+        // OpenImageIO 2.4 writes it through a proxy without its ImageLength.
+        std::vector<unsigned char> encoded;
+        OIIO::Filesystem::IOVecOutput memory(encoded);
+        const std::string extension = lowerExtension(path);
+        const bool inMemory = extension != ".tif" && extension != ".tiff" && out->supports("ioproxy") &&
+                              out->set_ioproxy(&memory);
         bool display = isDisplayEncoded(path);
         OIIO::ImageSpec spec(image.width, image.height, 3, display ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
         spec.attribute("oiio:ColorSpace", display ? "sRGB" : "Linear");
@@ -62,6 +95,11 @@ void writeImage(const std::filesystem::path& path, const Image& image, const Met
         if (!ok) {
             throw std::runtime_error("cannot write " + path.string() + ": " + error);
         }
+        if (inMemory) {
+            io::writeContent(temporary, path,
+                             std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
+        }
+        checkReadsBack(temporary, path, image);
     });
 }
 

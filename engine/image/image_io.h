@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "io/atomic_file.h"
 
 namespace sdfwb::image {
 
@@ -21,6 +22,10 @@ void checkWritableFormat(const std::filesystem::path& path);
 // `path`. Metadata entries become image attributes (e.g. "sdfwb:backend").
 // Throws std::runtime_error naming the path and the cause.
 void writeImage(const std::filesystem::path& path, const Image& image, const Metadata& metadata = {});
+// writeImage's first half: the image is written and checked, and replaces
+// `path` when `writes` is committed (with the other files staged there).
+void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, const Image& image,
+                const Metadata& metadata = {});
 
 // Reads any image OpenImageIO can read as linear RGB (8-bit data is decoded
 // from sRGB). Throws std::runtime_error naming the path.
