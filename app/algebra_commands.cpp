@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "algebra/groebner.h"
+#include "app/command_errors.h"
+#include "app/timeout_argument.h"
 #include "algebra/implicitization.h"
 #include "expr/error.h"
 #include "expr/identifier.h"
@@ -20,7 +22,7 @@ constexpr std::size_t kMemoryLimitBytes = std::size_t(8) << 30;
 
 algebra::Budget budget(double seconds) {
     algebra::Budget b;
-    b.time_limit_seconds = seconds;
+    b.time_limit_seconds = timeLimit(seconds);
     b.memory_limit_bytes = kMemoryLimitBytes;
     return b;
 }
@@ -51,17 +53,6 @@ nlohmann::ordered_json polynomialsJson(const std::vector<algebra::Polynomial>& p
     return array;
 }
 
-// Runs `body`, turning input errors into one line on stderr and exit code 2.
-template <typename Body>
-int guarded(const char* command, Body body) {
-    try {
-        return body();
-    } catch (const std::exception& error) {
-        std::cerr << "sdf-workbench " << command << ": " << error.what() << "\n";
-        return 2;
-    }
-}
-
 }  // namespace
 
 CLI::App* addImplicitizeCommand(CLI::App& app, ImplicitizeArguments& a) {
@@ -82,7 +73,7 @@ CLI::App* addImplicitizeCommand(CLI::App& app, ImplicitizeArguments& a) {
         orderHelp += "\n  " + std::string(entry.name) + ": " + std::string(entry.description);
     }
     command->add_option("--order", a.order, orderHelp)->check(CLI::IsMember(orders))->capture_default_str();
-    command->add_option("--timeout", a.timeout, "Give up after this many seconds")->capture_default_str();
+    addTimeoutOption(command, a.timeout);
     return command;
 }
 
@@ -95,12 +86,12 @@ CLI::App* addGroebnerCommand(CLI::App& app, GroebnerArguments& a) {
         ->check(CLI::IsMember({"lex", "deglex", "degrevlex"}))
         ->capture_default_str();
     command->add_flag("--json", a.json, "Print {\"basis\", \"seconds\"}");
-    command->add_option("--timeout", a.timeout, "Give up after this many seconds")->capture_default_str();
+    addTimeoutOption(command, a.timeout);
     return command;
 }
 
 int runImplicitize(const ImplicitizeArguments& a) {
-    return guarded("implicitize", [&] {
+    return runReportingErrors("implicitize", [&] {
         expr::TrigStrategy strategy =
             a.trig == "cos-sin" ? expr::TrigStrategy::CosSinRelation : expr::TrigStrategy::HalfAngle;
         expr::TrigConversion conversion = expr::parseParametrization(a.equations, strategy);
@@ -110,7 +101,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
         algebra::ImplicitizationResult result = algebra::implicitize(conversion.parametrization, options);
         if (!result.ok()) {
             std::cerr << "sdf-workbench implicitize: " << result.message << "\n";
-            return 3;
+            return kExitGaveUp;
         }
         if (a.json) {
             nlohmann::ordered_json out = {{"generators", polynomialsJson(result.generators)},
@@ -137,7 +128,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
 }
 
 int runGroebner(const GroebnerArguments& a) {
-    return guarded("groebner", [&] {
+    return runReportingErrors("groebner", [&] {
         std::vector<std::string> variables = splitVariables(a.vars);
         algebra::RingPtr ring = algebra::Ring::make(variables, *algebra::MonomialOrder::from_name(a.order));
         std::vector<algebra::Polynomial> polynomials = expr::parsePolynomials(a.polynomials, ring);
@@ -146,7 +137,7 @@ int runGroebner(const GroebnerArguments& a) {
         algebra::GroebnerResult result = algebra::groebner_basis(algebra::Ideal(ring, polynomials), options);
         if (!result.ok()) {
             std::cerr << "sdf-workbench groebner: " << result.message << "\n";
-            return 3;
+            return kExitGaveUp;
         }
         if (a.json) {
             nlohmann::ordered_json out = {{"basis", polynomialsJson(result.basis)}, {"seconds", result.seconds}};

@@ -13,7 +13,7 @@ struct ImplicitizeArguments {
     bool json = false;
     std::string trig = "cos-sin";  // or "half-angle" (measured slower: docs/expression-language.md)
     std::string order = "elimination";  // a name of algebra::elimination_orders()
-    double timeout = 300;             // seconds
+    double timeout = 300;             // seconds, 0 = none (timeout_argument.h)
 };
 
 struct GroebnerArguments {
@@ -21,7 +21,7 @@ struct GroebnerArguments {
     std::string vars;         // "x0,x1,x2"
     std::string order = "degrevlex";
     bool json = false;
-    double timeout = 300;
+    double timeout = 300;  // seconds, 0 = none
 };
 
 CLI::App* addImplicitizeCommand(CLI::App& app, ImplicitizeArguments& arguments);

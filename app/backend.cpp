@@ -1,9 +1,11 @@
 #include "app/backend.h"
 
 #include <chrono>
+#include <stdexcept>
 
 #include "cpu/cpu_backend.h"
 #include "gl/gl_backend.h"
+#include "gl/program_size.h"
 #include "gl/shader_generator.h"
 #include "io/atomic_file.h"
 
@@ -18,6 +20,11 @@ std::unique_ptr<render::Backend> makeBackend(Backend kind, glcontext::GlContext*
 }
 
 BackendResult renderWithBackend(const program::Program& program, const BackendRequest& request) {
+    if (request.backend == Backend::Gl) {
+        if (std::string problem = gl::shaderSizeProblem(program); !problem.empty()) {
+            throw std::invalid_argument(problem);
+        }
+    }
     auto start = std::chrono::steady_clock::now();
     if (request.backend == Backend::Gl && !request.dumpShader.empty()) {
         io::writeTextAtomically(request.dumpShader, gl::generateFragmentShader(program));

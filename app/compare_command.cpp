@@ -4,6 +4,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/command_errors.h"
+#include "app/output_paths.h"
 #include "image/image_io.h"
 
 namespace sdfwb::app {
@@ -14,10 +16,13 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArguments& a) {
     compare->add_option("second", a.second, "Second image")->required()->check(CLI::ExistingFile);
     compare->add_option("--diff", a.diff, "Write a heat image of the per-pixel difference");
     compare->add_option("--fail", a.thresholds.failLevel, "A pixel fails above this many levels of 255")
+        ->check(CLI::Range(0, 255))
         ->capture_default_str();
     compare->add_option("--fail-percent", a.thresholds.failPercent, "Allowed percentage of failing pixels")
+        ->check(CLI::Range(0, 100))
         ->capture_default_str();
     compare->add_option("--hard-fail", a.thresholds.hardFailLevel, "No channel may differ by more levels than this")
+        ->check(CLI::Range(0, 255))
         ->capture_default_str();
     return compare;
 }
@@ -44,7 +49,11 @@ std::string describeComparison(const image::Comparison& c) {
 }
 
 int runCompare(const CompareArguments& a) {
-    try {
+    return runReportingErrors("compare", [&] {
+        if (!a.diff.empty()) {
+            image::checkWritableFormat(a.diff);
+        }
+        checkOutputs({{"the first image", a.first}, {"the second image", a.second}}, {{"--diff", a.diff}});
         image::Image first = image::readImage(a.first), second = image::readImage(a.second);
         bool linear = !image::isDisplayEncoded(a.first) && !image::isDisplayEncoded(a.second);
         image::Comparison c = image::compareImages(first, second, linear);
@@ -53,11 +62,8 @@ int runCompare(const CompareArguments& a) {
         }
         bool ok = image::passes(c, a.thresholds);
         std::cout << describeComparison(c) << (ok ? "result: pass" : "result: FAIL") << "\n";
-        return ok ? 0 : 1;
-    } catch (const std::exception& error) {
-        std::cerr << "sdf-workbench compare: " << error.what() << "\n";
-        return 2;
-    }
+        return ok ? 0 : kExitCheckFailed;
+    });
 }
 
 }  // namespace sdfwb::app

@@ -1,5 +1,6 @@
 // sdf-workbench: one executable, one subcommand per job.
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -7,11 +8,14 @@
 #include <CLI/CLI.hpp>
 
 #include "app/algebra_commands.h"
+#include "app/command_errors.h"
+#include "app/formula_arguments.h"
 #include "app/compare_command.h"
 #include "app/gui/gui_command.h"
 #include "app/parity_command.h"
 #include "app/render_command.h"
 #include "app/tradeoff_command.h"
+#include "io/temporary_files.h"
 
 namespace {
 
@@ -49,14 +53,18 @@ int main(int argc, char** argv) {
     CLI::App* groebner = sdfwb::app::addGroebnerCommand(app, groebnerArguments);
     sdfwb::app::TradeoffArguments tradeoffArguments;
     CLI::App* tradeoff = sdfwb::app::addTradeoffCommand(app, tradeoffArguments);
+    sdfwb::io::removeTemporariesOnTermination();
+    std::vector<std::string> arguments = sdfwb::app::formulasAsPositionals(
+        std::vector<std::string>(argv + 1, argv + argc), app, {"groebner", "implicitize"});
+    std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
     try {
-        app.parse(argc, argv);
+        app.parse(arguments);
     } catch (const CLI::ParseError& error) {
         // --help and --version are "errors" with exit code 0
         if (error.get_exit_code() == 0) return app.exit(error);
         // one line, and the exit code of every other bad input
         std::cerr << "sdf-workbench: " << error.what() << " (see --help)\n";
-        return 2;
+        return sdfwb::app::kExitError;
     }
     if (implicitize->parsed()) {
         return sdfwb::app::runImplicitize(implicitizeArguments);
@@ -66,7 +74,7 @@ int main(int argc, char** argv) {
     }
     if (gui->parsed()) {
         int code = sdfwb::app::gui::runGui(guiArguments);
-        return code == sdfwb::app::gui::kNoWindow ? 1 : code;
+        return code == sdfwb::app::gui::kNoWindow ? sdfwb::app::kExitError : code;
     }
     if (render->parsed()) {
         return sdfwb::app::runRender(renderArguments);

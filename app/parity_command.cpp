@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "app/backend.h"
+#include "app/command_errors.h"
+#include "app/output_paths.h"
 #include "app/scene_source.h"
 #include "app/size_argument.h"
 #include "io/atomic_file.h"
@@ -30,13 +32,16 @@ CLI::App* addParityCommand(CLI::App& app, ParityArguments& a) {
 }
 
 int runParity(const ParityArguments& a) {
-    try {
+    return runReportingErrors("parity", [&] {
         auto [width, height] = parseSizeArgument(a.size);
         std::vector<std::string> paths = a.paths.empty() ? std::vector<std::string>{"scenes"} : a.paths;
         auto files = sceneFiles(paths);
         if (files.empty()) {
             throw std::runtime_error("no scene files found in " + paths.front());
         }
+        std::vector<NamedPath> inputs;
+        for (const auto& file : files) inputs.push_back({"the scene", file.string()});
+        checkOutputs(inputs, {{"--report", a.report}});
         std::unique_ptr<render::Backend> cpu = makeBackend(Backend::Cpu), gl = makeBackend(Backend::Gl);
         bool anyHard = std::any_of(files.begin(), files.end(), isHardCase);
         std::string table = parity::tableHeader(anyHard);
@@ -66,14 +71,8 @@ int runParity(const ParityArguments& a) {
             io::writeTextAtomically(a.report, "GL renderer: " + gl->device() + "\n\n" + table +
                                                   (polynomialNotes.empty() ? "" : "\n" + polynomialNotes));
         }
-        return allPass ? 0 : 1;
-    } catch (const scene::SceneError& error) {
-        for (const std::string& problem : error.problems()) std::cerr << "sdf-workbench parity: " << problem << "\n";
-        return 2;
-    } catch (const std::exception& error) {
-        std::cerr << "sdf-workbench parity: " << error.what() << "\n";
-        return 2;
-    }
+        return allPass ? 0 : kExitCheckFailed;
+    });
 }
 
 }  // namespace sdfwb::app

@@ -1,12 +1,14 @@
 #include "app/render_command.h"
 
-#include <atomic>
-#include <chrono>
-#include <csignal>
+#include <algorithm>
 #include <cstdio>
-#include <iostream>
 #include <sstream>
+#include <stdexcept>
+#include <thread>
 
+#include "app/command_errors.h"
+#include "app/memory_check.h"
+#include "app/output_paths.h"
 #include "app/progress_bar.h"
 #include "app/scene_source.h"
 #include "app/size_argument.h"
@@ -19,9 +21,17 @@
 namespace sdfwb::app {
 namespace {
 
-std::atomic<bool> interrupted{false};
-
-extern "C" void onInterrupt(int) { interrupted = true; }
+// More threads than the machine has only add overhead; say so rather than
+// silently use fewer. 0 stays 0 (all hardware threads).
+int clampedThreads(int requested) {
+    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (requested > hardware) {
+        std::fprintf(stderr, "sdf-workbench render: --threads %d: this machine runs %d threads at once; using %d\n",
+                     requested, hardware, hardware);
+        return hardware;
+    }
+    return requested;
+}
 
 }  // namespace
 
@@ -31,8 +41,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
     render->add_option("-o,--output", a.output, "Output image: .png, .jpg, .tif (8-bit sRGB) or .exr (linear float)")
         ->required();
     render->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default: the scene's render.width x height)");
-    render->add_option("--aa", a.aa, "Antialiasing: AA x AA samples per pixel, 1-" + std::to_string(scene::kMaxAa) + " (default: the scene's)")
-        ->check(CLI::Range(1, scene::kMaxAa));
+    render->add_option("--aa", a.aa, "Antialiasing: AA x AA samples per pixel, 1-8 (default: the scene's)")
+        ->check(CLI::Range(1, 8));
     render->add_option("--threads", a.threads, "CPU threads (default: all)")->check(CLI::Range(1, 1024));
     render->add_option("--backend", a.backend, "Renderer: cpu (reference) or gl (GLSL, headless through OSMesa)")
         ->check(CLI::IsMember({"cpu", "gl"}));
@@ -46,39 +56,37 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArguments& a) {
 }
 
 int runRender(const RenderArguments& a) {
-    try {
+    return runReportingErrors("render", [&] {
+        // Everything the arguments can get wrong fails here, before any work.
+        if (!a.dumpShader.empty() && a.backend != "gl") {
+            throw std::invalid_argument("--dump-shader needs --backend gl (the cpu backend runs no shader)");
+        }
         for (const std::string& output : {a.output, a.heat}) {
             if (!output.empty()) {
                 image::checkWritableFormat(output);
-                io::checkCanCreate(output);
             }
         }
-        scene::Scene scene = loadSceneArgument(a.scene);
+        checkOutputs({{"the scene", a.scene}}, {{"-o", a.output}, {"--heat", a.heat}, {"--dump-shader", a.dumpShader}});
         program::CompileOptions options;
         if (!a.size.empty()) {
             std::tie(options.width, options.height) = parseSizeArgument(a.size);
         }
         options.aa = a.aa;
         options.prune = !a.noPrune;
-        program::Program program = program::compileScene(scene, options);
-
         BackendRequest request;
         request.backend = a.backend == "gl" ? Backend::Gl : Backend::Cpu;
-        request.threads = a.threads;
+        request.threads = clampedThreads(a.threads);
         request.precision = a.precision == "double" ? render::Precision::Double : render::Precision::Float;
-        request.cancel = &interrupted;
         request.dumpShader = a.dumpShader;
+
+        scene::Scene scene = loadSceneArgument(a.scene);
+        program::Program program = program::compileScene(scene, options);
+        checkRenderFitsInMemory(program.width, program.height);
+
         ProgressBar bar("rendering");
         request.progress = [&](int done, int total) { bar.update(done, total); };
-        std::signal(SIGINT, onInterrupt);
-        std::signal(SIGTERM, onInterrupt);
-
         BackendResult outcome = renderWithBackend(program, request);
         double seconds = outcome.seconds;
-        if (outcome.cancelled) {
-            std::cerr << "sdf-workbench render: cancelled; no image written\n";
-            return 130;
-        }
 
         std::ostringstream settings;
         settings << program.width << "x" << program.height << " aa " << program.aa << ", max steps "
@@ -89,10 +97,13 @@ int runRender(const RenderArguments& a) {
                                     {"sdfwb:backend", a.backend},
                                     {"sdfwb:settings", settings.str()},
                                     {"sdfwb:renderSeconds", std::to_string(seconds)}};
-        image::writeImage(a.output, outcome.frame.color, metadata);
+        // The image and its heat map are written together or not at all.
+        io::StagedWrites writes;
+        image::stageImage(writes, a.output, outcome.frame.color, metadata);
         if (!a.heat.empty()) {
-            image::writeImage(a.heat, image::stepHeatImage(outcome.frame, program.trace.maxSteps), metadata);
+            image::stageImage(writes, a.heat, image::stepHeatImage(outcome.frame, program.trace.maxSteps), metadata);
         }
+        writes.commit();
         if (a.stats) {
             image::FrameStats stats = image::frameStats(outcome.frame);
             std::printf("backend %s (%s), %dx%d aa %d\n", a.backend.c_str(),
@@ -106,15 +117,7 @@ int runRender(const RenderArguments& a) {
         }
         std::printf("%s\n", a.output.c_str());
         return 0;
-    } catch (const scene::SceneError& error) {
-        for (const std::string& problem : error.problems()) {
-            std::cerr << "sdf-workbench render: " << problem << "\n";
-        }
-        return 2;
-    } catch (const std::exception& error) {
-        std::cerr << "sdf-workbench render: " << error.what() << "\n";
-        return 1;
-    }
+    });
 }
 
 }  // namespace sdfwb::app

@@ -18,7 +18,10 @@
 #include "app/gui/key_gate.h"
 #include "app/gui/main_window.h"
 #include "app/gui/window_capture.h"
+#include "app/command_errors.h"
+#include "app/output_paths.h"
 #include "app/scene_source.h"
+#include "image/image_io.h"
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
 #include "ui/user_paths.h"
@@ -184,15 +187,17 @@ int runGui(const GuiArguments& arguments) {
         if (!arguments.script.empty()) {
             script.emplace(ui::parseScript(io::readTextFile(arguments.script), arguments.script), arguments.script);
         } else if (!arguments.screenshot.empty()) {
+            image::checkWritableFormat(arguments.screenshot);
+            checkOutputs({{"the scene", arguments.scene}}, {{"--screenshot", arguments.screenshot}});
             script.emplace(ui::parseScript(ui::screenshotScript(arguments.screenshot, arguments.frames), "--screenshot"),
                            "--screenshot");
         }
     } catch (const scene::SceneError& error) {
         for (const std::string& problem : error.problems()) std::cerr << "sdf-workbench gui: " << problem << "\n";
-        return 1;
+        return kExitError;
     } catch (const std::exception& error) {
         std::cerr << "sdf-workbench gui: " << error.what() << "\n";
-        return 1;
+        return kExitError;
     }
 
     glfwSetErrorCallback([](int, const char* text) { glfwErrorText = text; });

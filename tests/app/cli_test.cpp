@@ -11,40 +11,14 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "cli_process.h"
+
 namespace {
 
+using sdfwb::test::Cli;
+using sdfwb::test::ProcessResult;
+using sdfwb::test::run;
 namespace fs = std::filesystem;
-
-struct ProcessResult {
-    int exitCode;
-    std::string output;  // stdout and stderr together
-};
-
-ProcessResult run(const std::string& arguments) {
-    std::string command = std::string(SDFWB_EXECUTABLE) + " " + arguments + " 2>&1";
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-    std::string output;
-    std::array<char, 4096> buffer{};
-    size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0) output.append(buffer.data(), n);
-    int status = pclose(pipe.release());
-    return {WEXITSTATUS(status), output};
-}
-
-class Cli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = fs::temp_directory_path() / ("sdfwb_cli_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(folder_);
-        setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-    fs::path path(const std::string& name) const { return folder_ / name; }
-    size_t filesInFolder() const { return static_cast<size_t>(std::distance(fs::directory_iterator(folder_), {})); }
-
-    fs::path folder_;
-};
 
 TEST_F(Cli, RenderWritesTheImageWithMetadataAndPrintsItsPath) {
     fs::path out = path("snapshot.png");
