@@ -1,6 +1,9 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace sdfwb::scene {
 namespace {
@@ -52,6 +55,18 @@ Material defaultMaterial() {
     Material m;
     m.name = "";
     return m;
+}
+
+int treeDepth(const Node& node) {
+    int deepest = 0;
+    std::vector<std::pair<const Node*, int>> pending{{&node, 1}};
+    while (!pending.empty()) {
+        auto [current, depth] = pending.back();
+        pending.pop_back();
+        deepest = std::max(deepest, depth);
+        for (const Node& child : current->children) pending.emplace_back(&child, depth + 1);
+    }
+    return deepest;
 }
 
 }  // namespace sdfwb::scene

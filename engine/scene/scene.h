@@ -151,4 +151,8 @@ struct Scene {
 // The material used where a primitive names none ("").
 Material defaultMaterial();
 
+// Levels of the tree under `node`, itself being level 1; without recursion, so
+// it also measures trees deeper than kMaxNodeDepth (an edit can build one).
+int treeDepth(const Node& node);
+
 }  // namespace sdfwb::scene

@@ -618,6 +618,11 @@ json sceneToJson(const Scene& scene) {
 std::string serializeScene(const Scene& scene) { return sceneToJson(scene).dump(2) + "\n"; }
 
 void saveSceneFile(const Scene& scene, const std::filesystem::path& path) {
+    // A file that could not be loaded again would lose the work it holds.
+    if (int depth = treeDepth(scene.root); depth > kMaxNodeDepth) {
+        throw std::runtime_error("cannot write " + path.string() + ": the node tree is " + std::to_string(depth) +
+                                 " levels deep (a scene file holds at most " + std::to_string(kMaxNodeDepth) + ")");
+    }
     io::writeTextAtomically(path, serializeScene(scene));
 }
 

@@ -38,7 +38,8 @@ Scene loadSceneFile(const std::filesystem::path& path);
 nlohmann::ordered_json sceneToJson(const Scene& scene);
 std::string serializeScene(const Scene& scene);
 // Writes a temporary file next to `path` and renames it over `path`; throws
-// std::runtime_error naming the path on failure and leaves no partial file.
+// std::runtime_error naming the path on failure (also for a tree deeper than
+// kMaxNodeDepth, which could not be loaded again) and leaves no partial file.
 void saveSceneFile(const Scene& scene, const std::filesystem::path& path);
 
 // Node-level conversion, used by the editor's clipboard and primitive library.

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+
 #include "scene/json_text.h"
 #include "scene/scene_json.h"
 
@@ -126,6 +130,21 @@ TEST(HostileJson, UserStringsInMessagesAreEscapedAndShort) {
     problems = problemsOf(document(R"({"kind": "sphere"})") + "\"" + std::string(1'000'000, 'x'));
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_LT(problems[0].size(), 300u) << problems[0].substr(0, 300);
+}
+
+TEST(HostileJson, ATreeTooDeepToLoadIsNotSavedAndTheOldFileStays) {
+    Scene scene = parseScene(document(transformChain(kMaxNodeDepth - 1)));
+    EXPECT_EQ(treeDepth(scene.root), kMaxNodeDepth);
+    auto path = std::filesystem::temp_directory_path() / ("sdfwb_deep_" + std::to_string(::getpid()) + ".json");
+    saveSceneFile(scene, path);
+    const std::string saved = serializeScene(scene);
+    Node wrapper = Node::make(NodeKind::Union);
+    wrapper.children.push_back(scene.root);
+    scene.root = wrapper;
+    EXPECT_EQ(treeDepth(scene.root), kMaxNodeDepth + 1);
+    EXPECT_THROW(saveSceneFile(scene, path), std::runtime_error);
+    EXPECT_EQ(serializeScene(loadSceneFile(path)), saved);
+    std::filesystem::remove(path);
 }
 
 TEST(HostileJson, AbbreviatedPathsKeepStartAndEnd) {
