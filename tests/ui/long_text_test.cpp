@@ -92,6 +92,8 @@ TEST_F(LongTextTest, PolynomialWindowShowsA16KResultAndSavesItWhole) {
         EXPECT_LT(largestDrawList(), 20000);
     }
 
+    // The output folder exists only after tests that made it: make it here, so the test passes alone.
+    std::filesystem::create_directories(SDFWB_TEST_OUTPUT_DIR);
     std::filesystem::path file = std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "long_text_result.txt";
     EXPECT_EQ(saveText(file, generator + " = 0"), "");
     EXPECT_EQ(io::readTextFile(file), generator + " = 0");
