@@ -64,6 +64,11 @@ struct BudgetExceeded {
   std::string message;  // "gave up after 2.0 s: time limit of 2 s reached (basis 31, 118 pairs left)"
 };
 
+/// Thrown by BudgetMonitor::add_work when a work limit set by the caller is
+/// reached: not a budget of the user's, but a computation the caller tries
+/// first and abandons when it costs more than an alternative (implicitize).
+struct WorkLimitReached {};
+
 /// Bytes currently held by GMP numbers in this process (counted once the
 /// accounting allocator is installed; install_gmp_memory_accounting() is
 /// called by every BudgetMonitor and is idempotent).
@@ -87,6 +92,20 @@ class BudgetMonitor {
   /// Primes finished by the modular method, reported with the progress.
   void set_primes(std::size_t primes) { primes_ = primes; }
 
+  /// Work counted in the engine's term operations (a term added to a
+  /// reduction), a measure of cost independent of the clock and the load.
+  /// Throws WorkLimitReached once the limit (if any) is passed.
+  void add_work(std::uint64_t terms) {
+    work_ += terms;
+    if (work_limit_ && work_ > *work_limit_) throw WorkLimitReached{};
+  }
+  std::uint64_t work() const { return work_; }
+  /// Counts from 0 against `limit` from now on; nullopt: no limit.
+  void limit_work(std::optional<std::uint64_t> limit) {
+    work_ = 0;
+    work_limit_ = limit;
+  }
+
  private:
   const Budget& budget_;
   std::chrono::steady_clock::time_point start_;
@@ -94,6 +113,8 @@ class BudgetMonitor {
   std::int64_t gmp_bytes_at_start_;
   std::uint32_t ticks_ = 0;
   std::size_t primes_ = 0;
+  std::uint64_t work_ = 0;
+  std::optional<std::uint64_t> work_limit_;
 };
 
 /// Runs `body`, which may throw BudgetExceeded, and records how it ended in

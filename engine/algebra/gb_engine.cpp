@@ -56,6 +56,7 @@ typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* sc
     domain_.negate(multiplier);
     layout_.divide(shift.data(), mon.data(), g.mons.data());
     if (g.size() > 1) bucket_.add_multiple(g, 1, multiplier, shift.data());
+    monitor_.add_work(g.size());
     sugar = std::max(sugar, layout_.sugar_degree(shift.data()) + g.sugar);
     if constexpr (D::has_content) {
       if (scaled_bits > kContentBits && !scale_product) {

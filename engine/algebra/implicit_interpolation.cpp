@@ -327,11 +327,32 @@ Polynomial to_polynomial(const std::vector<std::vector<Exponent>>& monomials, co
 
 std::size_t matrix_bytes(std::size_t columns) { return 2 * (columns + 8) * columns * sizeof(mp_limb_t); }
 
+bool applies(const RationalParametrization& p) {
+  return p.relations.empty() && p.parameters.size() + 1 == p.coordinates.size();
+}
+
 }  // namespace
+
+std::optional<double> interpolation_cost(const RationalParametrization& p) {
+  if (!applies(p)) return std::nullopt;
+  const Homogeneous h = homogeneous_form(clear_denominators(p));
+  if (h.total_degree == 0) return std::nullopt;
+  const std::uint64_t bound = degree_bound(h);
+  std::size_t columns = 1;
+  for (std::uint64_t d = 1; d <= bound && columns <= kMaxInterpolationMonomials; ++d) {
+    columns = monomial_count(h.polys.size(), d);
+  }
+  columns = std::min(columns, kMaxInterpolationMonomials);
+  // The degree search costs about twice its last matrix (the sizes grow
+  // like d^n), and the reconstruction takes at least two more primes.
+  constexpr double kMatrices = 4;
+  const double n = static_cast<double>(columns);
+  return kMatrices * n * n * n / 3;
+}
 
 std::optional<Polynomial> implicitize_by_interpolation(const RationalParametrization& p, const RingPtr& coordinates,
                                                        BudgetMonitor& monitor, GroebnerStats& stats) {
-  if (!p.relations.empty() || p.parameters.size() + 1 != p.coordinates.size()) return std::nullopt;
+  if (!applies(p)) return std::nullopt;
   const Homogeneous h = homogeneous_form(clear_denominators(p));
   if (h.total_degree == 0) return std::nullopt;
   const std::size_t variables = h.polys.size();

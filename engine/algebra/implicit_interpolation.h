@@ -50,6 +50,14 @@ namespace sdfwb::algebra {
 /// matrix then needs about 70 MB and a second modulo a prime.
 inline constexpr std::size_t kMaxInterpolationMonomials = 2024;
 
+/// What interpolation is expected to cost, in multiplications modulo a
+/// prime: a few dense nullspaces (the degree search, then the primes of the
+/// reconstruction) of the size at the degree bound (or at
+/// kMaxInterpolationMonomials, where the search stops). Nullopt when
+/// interpolation does not apply to the shape of `p` (relations, parameter
+/// count). Cheap: no matrix is built.
+std::optional<double> interpolation_cost(const RationalParametrization& p);
+
 /// The implicit equation of `p` in `coordinates` (a ring of p's coordinates),
 /// primitive with a positive leading coefficient, verified exactly; nullopt
 /// when interpolation does not apply: relations among the parameters, a

@@ -13,6 +13,12 @@ namespace sdfwb::algebra {
 
 namespace {
 
+// The share of interpolation's expected cost (multiplications modulo a
+// prime) that elimination may spend first, in term operations (each about
+// as costly as a few multiplications): a trial that fails wastes a few
+// percent of the interpolation after it.
+constexpr double kEliminationTrialShare = 1.0 / 128;
+
 struct Fractions {
   RingPtr ring;  // parameters, degrevlex
   std::vector<Polynomial> numerators, denominators, relations;
@@ -267,6 +273,8 @@ EliminationProblem substitute_linear_parameters(const EliminationProblem& proble
 
 ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
   EliminationProblem problem = implicitization_ideal(p, options.denominator);
+  // The auxiliary variable of Theorem 1.8 comes first when there is one.
+  const bool has_denominator = problem.eliminated.size() > p.parameters.size();
   ImplicitizationResult result;
   result.ring = Ring::make(p.coordinates, coordinate_order(options.order));
   const bool modular = options.groebner.method != GroebnerMethod::rational;
@@ -288,9 +296,44 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   // Theorem 1.8 to eliminate) is smaller than any interpolation.
   const bool parameters_left = std::any_of(problem.eliminated.begin(), problem.eliminated.end(),
                                            [&](const std::string& name) { return contains(p.parameters, name); });
-  // Not when every parameter is solved for: then what is left is smaller
-  // than any interpolation.
-  if (options.interpolate && modular && options.order != EliminationOrder::lex && parameters_left) {
+  const std::string elimination_method =
+      !parameters_left ? "substitution" : substituted ? "substitution+elimination" : "elimination";
+  // A polynomial in the coordinates lies in the elimination ideal exactly
+  // when it vanishes on the parametrization, which substitution decides
+  // cheaply: the lifted equations are verified that way.
+  auto modular_elimination = [&] {
+    auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
+    generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
+                                         result.stats);
+  };
+  const std::optional<double> interpolation =
+      options.interpolate && modular && options.order != EliminationOrder::lex && parameters_left
+          ? interpolation_cost(p)
+          : std::nullopt;
+  if (interpolation && options.elimination_trial && !has_denominator) {
+    // Interpolation solves dense systems in every monomial of the degree;
+    // elimination works on the terms that occur, and is far cheaper when a
+    // polynomial parametrization is sparse or one parameter is left. Neither
+    // shows in a degree bound, so elimination runs first within a small
+    // share of interpolation's expected cost (counted in term operations,
+    // not time, so the choice does not depend on the load) and is abandoned
+    // beyond. Not with a denominator: its auxiliary variable raises the
+    // elimination's degrees by the denominator's, and elimination lost to
+    // interpolation on every rational patch and half-angle surface measured
+    // (docs/algebra-benchmark.md).
+    monitor.limit_work(static_cast<std::uint64_t>(*interpolation * kEliminationTrialShare));
+    try {
+      run_within_budget(result, monitor, modular_elimination);
+      done = true;
+      result.method = elimination_method;
+    } catch (const WorkLimitReached&) {
+      generators.clear();
+      result.stats = {};
+    }
+    monitor.limit_work(std::nullopt);
+    if (!result.ok()) return result;
+  }
+  if (interpolation && !done) {
     run_within_budget(result, monitor, [&] {
       if (std::optional<Polynomial> f = implicitize_by_interpolation(p, result.ring, monitor, result.stats)) {
         generators.push_back(std::move(*f));
@@ -316,7 +359,7 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
     result.method = "substitution";
     done = true;
   }
-  if (!done) result.method = !parameters_left ? "substitution" : substituted ? "substitution+elimination" : "elimination";
+  if (!done) result.method = elimination_method;
   if (!done && (options.order == EliminationOrder::lex || !modular)) {
     GroebnerResult basis = options.order == EliminationOrder::lex
                                ? lex_elimination(problem, result.ring, options.groebner)
@@ -326,14 +369,7 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
     result.stats = basis.stats;
     generators = std::move(basis.basis);
   } else if (!done) {
-    // A polynomial in the coordinates lies in the elimination ideal exactly
-    // when it vanishes on the parametrization, which substitution decides
-    // cheaply: the lifted equations are verified that way.
-    auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
-    run_within_budget(result, monitor, [&] {
-      generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
-                                           result.stats);
-    });
+    run_within_budget(result, monitor, modular_elimination);
   }
   result.seconds = monitor.elapsed_seconds();
   if (!result.ok()) return result;

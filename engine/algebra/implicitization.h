@@ -85,6 +85,10 @@ struct ImplicitizationOptions {
   /// method is GroebnerMethod::rational or the order is lex (the textbook's
   /// elimination, kept for comparison). Elimination where it does not apply.
   bool interpolate = true;
+  /// Where interpolation applies to a polynomial parametrization,
+  /// elimination first within a share of interpolation's expected cost
+  /// (implicitize). False: interpolation straight away.
+  bool elimination_trial = true;
 };
 
 struct ImplicitizationResult {

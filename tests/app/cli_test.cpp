@@ -118,7 +118,7 @@ TEST_F(Cli, ImplicitizePrintsTheEquationAndItsJson) {
     ProcessResult json = run("implicitize \"x = u*v; y = v; z = u^2\" --json");
     ASSERT_EQ(json.exitCode, 0) << json.output;
     EXPECT_EQ(json.output.find("{\"generators\":[\"y^2*z - x^2\"],\"degree\":3,\"terms\":2,"
-                               "\"method\":\"interpolation\",\"seconds\":"),
+                               "\"method\":\"substitution+elimination\",\"seconds\":"),
               0u)
         << json.output;
 }
