@@ -112,8 +112,8 @@ int runRender(const RenderArguments& a) {
             if (a.backend == "gl") {
                 std::printf("shader compile %.3f s (included in time)\n", outcome.compileSeconds);
             }
-            std::printf("time %.3f s, mean steps %.2f, max steps %.0f, hit ratio %.4f\n", seconds, stats.meanSteps,
-                        stats.maxSteps, stats.hitRatio);
+            std::printf("time %.3f s, mean steps %.2f, max steps %.0f, mean evaluations %.2f, hit ratio %.4f\n",
+                        seconds, stats.meanSteps, stats.maxSteps, stats.meanEvaluations, stats.hitRatio);
         }
         std::printf("%s\n", a.output.c_str());
         return 0;

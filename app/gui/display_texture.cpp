@@ -50,12 +50,15 @@ image::Frame cropFrame(const image::Frame& frame, const render::TileRect& rect) 
     image::Frame out;
     out.color = image::Image(rect.w, rect.h);
     out.steps.resize(out.color.pixelCount());
+    out.evaluations.resize(out.color.pixelCount());
     out.coverage.resize(out.color.pixelCount());
     for (int y = 0; y < rect.h; ++y) {
         size_t from = static_cast<size_t>(rect.y + y) * static_cast<size_t>(frame.color.width) + static_cast<size_t>(rect.x);
         size_t to = static_cast<size_t>(y) * static_cast<size_t>(rect.w);
         std::copy_n(frame.color.rgb.begin() + static_cast<long>(3 * from), 3 * rect.w, out.color.rgb.begin() + static_cast<long>(3 * to));
         std::copy_n(frame.steps.begin() + static_cast<long>(from), rect.w, out.steps.begin() + static_cast<long>(to));
+        std::copy_n(frame.evaluations.begin() + static_cast<long>(from), rect.w,
+                    out.evaluations.begin() + static_cast<long>(to));
         std::copy_n(frame.coverage.begin() + static_cast<long>(from), rect.w, out.coverage.begin() + static_cast<long>(to));
     }
     return out;

@@ -89,6 +89,7 @@ void statsOverlay(AppState& app, ImVec2 corner) {
                 s.gpuSeconds * 1000.0);
     ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
                 s.frame.hitRatio * 100.0);
+    ImGui::Text("field evaluations/pixel mean %.1f (march, normals, AO, shadows)", s.frame.meanEvaluations);
     ImGui::Text("GL %s", viewport.glInfo().renderer.c_str());
     ImGui::Text("shaders built %d, last %.2f s", s.compiles, s.compileSeconds);
     ImGui::Text("%s", s.status.c_str());

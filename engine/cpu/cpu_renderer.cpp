@@ -53,7 +53,7 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
         for (int y = tile.y; y < tile.y + tile.h; ++y) {
             for (int x = tile.x; x < tile.x + tile.w; ++x) {
                 vec3 sum(Real(0));
-                int steps = 0, hits = 0;
+                int steps = 0, evaluations = 0, hits = 0;
                 float depthSum = 0.0f;  // summed in float, in the GL backend's blending order
                 for (int m = 0; m < aa; ++m) {
                     for (int n = 0; n < aa; ++n) {
@@ -63,6 +63,7 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
                         auto result = kernel.trace(scratch, px, py);
                         sum = sum + result.color;
                         steps += result.steps;
+                        evaluations += result.evaluations;
                         hits += result.hit ? 1 : 0;
                         depthSum = depthSum + (result.hit ? static_cast<float>(result.t) : 0.0f);
                     }
@@ -73,6 +74,7 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
                 frame.color.rgb[3 * i + 1] = static_cast<float>(color.y);
                 frame.color.rgb[3 * i + 2] = static_cast<float>(color.z);
                 frame.steps[i] = static_cast<float>(steps) / static_cast<float>(aa * aa);
+                frame.evaluations[i] = static_cast<float>(evaluations) / static_cast<float>(aa * aa);
                 frame.coverage[i] = static_cast<float>(hits) / static_cast<float>(aa * aa);
                 frame.depth[i] = hits > 0 ? depthSum / static_cast<float>(hits) : 0.0f;
             }

@@ -129,6 +129,7 @@ inline Sample fieldAt(const program::Program& program, const prune::PruneGrid* g
 struct SampleResult {
     vec3 color;
     int steps;
+    int evaluations;
     bool hit;
     real t;  // march distance of the hit
 };
@@ -178,7 +179,7 @@ struct Kernel {
     SampleResult trace(Scratch& scratch, real px, real py) const {
         TraceState s = SampleDriver{program, grid.get(), params.data(), scratch}.traceSample(
             px, py, real(program.width), real(program.height));
-        return SampleResult{s.color, s.steps, s.hit, s.t};
+        return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }
 
     Sample map(Scratch& scratch, vec3 p) const { return mapProgram(program, params.data(), scratch, p); }

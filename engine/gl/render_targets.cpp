@@ -53,6 +53,7 @@ void readFrameRegion(const glcontext::GlFunctions& gl, const RenderTargets& targ
             size_t s = (source + static_cast<size_t>(col)) * 4, t = target + static_cast<size_t>(col);
             for (size_t c = 0; c < 3; ++c) frame.color.rgb[3 * t + c] = color[s + c] / n;
             frame.steps[t] = stats[s] / n;
+            frame.evaluations[t] = stats[s + 3] / n;
             frame.coverage[t] = stats[s + 1] / n;
             frame.depth[t] = stats[s + 1] > 0.0f ? stats[s + 2] / stats[s + 1] : 0.0f;
         }

@@ -40,7 +40,7 @@ void main() {
     real py = gl_FragCoord.y + subsampleOffset(uSubsample.y, uAA);
     TraceState s = traceSample(px, py, uResolution.x, uResolution.y);
     outColor = vec4(s.color, 1.0);
-    outStats = vec4(float(s.steps), s.hit ? 1.0 : 0.0, s.hit ? s.t : 0.0, 1.0);
+    outStats = vec4(float(s.steps), s.hit ? 1.0 : 0.0, s.hit ? s.t : 0.0, float(s.evaluations));
 }
 )";
 

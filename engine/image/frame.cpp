@@ -13,8 +13,12 @@ FrameStats frameStats(const Frame& frame) {
         stats.maxSteps = std::max(stats.maxSteps, static_cast<double>(frame.steps[i]));
         stats.hitRatio += frame.coverage[i];
     }
+    for (float e : frame.evaluations) {
+        stats.meanEvaluations += e;
+    }
     if (n > 0) {
         stats.meanSteps /= static_cast<double>(n);
+        stats.meanEvaluations /= static_cast<double>(n);
         stats.hitRatio /= static_cast<double>(n);
     }
     for (float v : frame.color.rgb) {

@@ -1,6 +1,6 @@
 #pragma once
 // A rendered frame as both backends produce it: linear float RGB, rows top to
-// bottom, plus per-pixel statistics of the primary march.
+// bottom, plus per-pixel statistics of the march.
 
 #include <cstddef>
 #include <vector>
@@ -20,6 +20,7 @@ struct Image {
 struct Frame {
     Image color;
     std::vector<float> steps;     // mean primary-march evaluations per sub-sample, per pixel
+    std::vector<float> evaluations;  // mean field evaluations of any kind (march, normal, AO, shadow) per sub-sample
     std::vector<float> coverage;  // fraction of sub-samples that hit a surface, per pixel
     std::vector<float> depth;     // mean march distance t of the sub-samples that hit (0 where none did)
 };
@@ -27,6 +28,7 @@ struct Frame {
 struct FrameStats {
     double meanSteps = 0;
     double maxSteps = 0;
+    double meanEvaluations = 0;  // all field evaluations per sub-sample, averaged over pixels
     double hitRatio = 0;     // mean coverage
     size_t nonFinite = 0;    // NaN or infinite colour components
 };

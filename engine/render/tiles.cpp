@@ -18,6 +18,7 @@ image::Frame blankFrame(int width, int height) {
     image::Frame frame;
     frame.color = image::Image(width, height);
     frame.steps.assign(frame.color.pixelCount(), 0.0f);
+    frame.evaluations.assign(frame.color.pixelCount(), 0.0f);
     frame.coverage.assign(frame.color.pixelCount(), 0.0f);
     frame.depth.assign(frame.color.pixelCount(), 0.0f);
     return frame;

@@ -18,8 +18,8 @@ namespace {
 
 // Bump when the renderer's output changes for the same scene, so stale
 // references are rendered again.
-constexpr std::string_view kReferenceVersion = "sdfwb-reference-1";
-constexpr char kMagic[8] = {'S', 'D', 'F', 'W', 'R', 'E', 'F', '1'};
+constexpr std::string_view kReferenceVersion = "sdfwb-reference-2";
+constexpr char kMagic[8] = {'S', 'D', 'F', 'W', 'R', 'E', 'F', '2'};
 
 std::filesystem::path cacheFile(const std::filesystem::path& dir, const std::string& key) {
     return dir / (key + ".ref");
@@ -73,7 +73,7 @@ std::optional<image::Frame> loadReference(const std::filesystem::path& cacheDir,
     frame.color = image::Image(width, height);
     size_t pixels = frame.color.pixelCount();
     if (!readFloats(in, frame.color.rgb, 3 * pixels) || !readFloats(in, frame.steps, pixels) ||
-        !readFloats(in, frame.coverage, pixels) || !readFloats(in, frame.depth, pixels) || in.peek() != EOF) {
+        !readFloats(in, frame.evaluations, pixels) || !readFloats(in, frame.coverage, pixels) || !readFloats(in, frame.depth, pixels) || in.peek() != EOF) {
         return std::nullopt;
     }
     return frame;
@@ -89,6 +89,7 @@ void storeReference(const std::filesystem::path& cacheDir, const std::string& ke
     out.write(reinterpret_cast<const char*>(size), sizeof size);
     writeFloats(out, frame.color.rgb);
     writeFloats(out, frame.steps);
+    writeFloats(out, frame.evaluations);
     writeFloats(out, frame.coverage);
     writeFloats(out, frame.depth);
     io::writeTextAtomically(cacheFile(cacheDir, key), out.str());

@@ -36,9 +36,9 @@ double medianOf(std::vector<double> v) {
 }
 
 constexpr const char* kRowHeader =
-    "| setting | backend | ms | x default | mean steps | max steps | mean err | max err | PSNR dB | % > 1/255 | "
+    "| setting | backend | ms | x default | mean steps | max steps | mean evals | mean err | max err | PSNR dB | % > 1/255 | "
     "% > 8/255 | hit mismatch % | depth err % | |\n"
-    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 std::string row(const SceneResult& scene, size_t index, size_t backend, const std::string& backendName,
                 const BackendAnalysis& a) {
@@ -54,7 +54,8 @@ std::string row(const SceneResult& scene, size_t index, size_t backend, const st
     std::ostringstream out;
     out << "| " << scene.results[index].setting.label << " | " << backendName << " | " << milliseconds(m.seconds)
         << " | " << format("%.2f", m.seconds > 0 ? d.seconds / m.seconds : 0) << " | " << format("%.1f", m.meanSteps)
-        << " | " << format("%.0f", m.maxSteps) << " | " << format("%.3f", c.meanAbs) << " | "
+        << " | " << format("%.0f", m.maxSteps) << " | " << format("%.1f", m.meanEvaluations) << " | "
+        << format("%.3f", c.meanAbs) << " | "
         << format("%.0f", c.maxAbs) << " | " << (std::isinf(c.psnr) ? std::string("inf") : format("%.1f", c.psnr))
         << " | " << format("%.2f", c.percentAbove1) << " | " << format("%.2f", c.percentAbove8) << " | "
         << format("%.3f", 100.0 * m.error.hitMismatch) << " | " << format("%.3f", 100.0 * m.error.depthError) << " | "

@@ -79,6 +79,7 @@ public:
                 image::FrameStats stats = image::frameStats(timed->frame);
                 m.meanSteps = stats.meanSteps;
                 m.maxSteps = stats.maxSteps;
+                m.meanEvaluations = stats.meanEvaluations;
                 m.error = frameError(timed->frame, reference);
                 if (b == 0) first = std::move(timed->frame);
             }

@@ -63,6 +63,7 @@ image::Frame smallFrame() {
     f.color = image::Image(3, 2);
     for (size_t i = 0; i < f.color.rgb.size(); ++i) f.color.rgb[i] = 0.1f * float(i);
     f.steps = {1, 2, 3, 4, 5, 6};
+    f.evaluations = {7, 8, 9, 10, 11, 12};
     f.coverage = {0, 0.25f, 1, 1, 0.5f, 0};
     f.depth = {0, 2, 3, 4, 5, 0};
     return f;
@@ -75,6 +76,7 @@ TEST_F(ReferenceCache, StoredFramesComeBackBitForBit) {
     ASSERT_TRUE(back);
     EXPECT_EQ(back->color.rgb, f.color.rgb);
     EXPECT_EQ(back->steps, f.steps);
+    EXPECT_EQ(back->evaluations, f.evaluations);
     EXPECT_EQ(back->coverage, f.coverage);
     EXPECT_EQ(back->depth, f.depth);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "nested"), {}), 1);  // no temporary left

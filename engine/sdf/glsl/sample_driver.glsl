@@ -36,6 +36,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
         Light light = sceneLight(lightIndex(s));
         if (traceNeedsSample(s)) {
             field = map(tracePoint(s, light, settings));
+            s.evaluations = s.evaluations + 1;
         }
         s = traceAdvance(s, field, light, settings);
     }

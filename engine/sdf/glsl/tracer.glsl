@@ -25,6 +25,7 @@ struct TraceState {
     int phase;
     int counter;        // samples taken in the current phase
     int steps;          // primary-march evaluations
+    int evaluations;    // all evaluations of the field: march, normal, AO and shadow samples
     bool hit;
     vec3 rayOrigin;
     vec3 rayDirection;
@@ -51,7 +52,7 @@ struct TraceState {
 
 SHARED_FN TraceState traceBegin(Ray ray) {
     Material none = noMaterial();
-    return TraceState(PHASE_MARCH, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
+    return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(0)));
 }
