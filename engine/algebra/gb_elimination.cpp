@@ -12,15 +12,17 @@ namespace sdfwb::algebra::gb {
 std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vector<std::string>& eliminated,
                                             const RingPtr& remaining,
                                             const std::function<bool(const Polynomial&)>& contains,
-                                            BudgetMonitor& monitor, GroebnerStats& stats) {
+                                            BudgetMonitor& monitor, GroebnerStats& stats,
+                                            const std::optional<MonomialOrder>& order) {
   const std::size_t k = eliminated.size();
   std::vector<std::string> names = eliminated;
   names.insert(names.end(), remaining->variables().begin(), remaining->variables().end());
   std::vector<std::int64_t> weights(names.size(), 0);
   std::fill(weights.begin(), weights.begin() + static_cast<std::ptrdiff_t>(k), 1);
   RingPtr base = Ring::make(
-      names, MonomialOrder::weighted(weights, MonomialOrder::elimination(k, MonomialOrder::degrevlex(),
-                                                                         remaining->order())));
+      names, order ? *order
+                   : MonomialOrder::weighted(weights, MonomialOrder::elimination(k, MonomialOrder::degrevlex(),
+                                                                                 remaining->order())));
   RingPtr homogeneous = homogenized_ring(*base);
   std::vector<Polynomial> generators;
   for (const Polynomial& f : ideal.generators()) generators.push_back(homogenize(f.in_ring(base), homogeneous));

@@ -17,6 +17,7 @@
 #include "algebra/ideal.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,14 @@ namespace sdfwb::algebra::gb {
 /// ring of the variables of I's ring not in `eliminated`, with the order
 /// wanted for the result). `contains` must decide exactly whether a
 /// polynomial of `remaining` lies in I. Throws BudgetExceeded.
+/// `order`, if given, is the elimination order of I's variables (the
+/// eliminated ones first) used modulo p in place of the block order above,
+/// e.g. pure lex for the textbook's elimination; still only the
+/// elimination part is lifted and verified.
 std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vector<std::string>& eliminated,
                                             const RingPtr& remaining,
                                             const std::function<bool(const Polynomial&)>& contains,
-                                            BudgetMonitor& monitor, GroebnerStats& stats);
+                                            BudgetMonitor& monitor, GroebnerStats& stats,
+                                            const std::optional<MonomialOrder>& order = std::nullopt);
 
 }  // namespace sdfwb::algebra::gb

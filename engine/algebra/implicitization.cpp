@@ -301,10 +301,14 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   // A polynomial in the coordinates lies in the elimination ideal exactly
   // when it vanishes on the parametrization, which substitution decides
   // cheaply: the lifted equations are verified that way.
+  // The textbook's lex order modulo p, lifting only the elimination part
+  // (the lex basis of the whole ideal over Q is never needed).
+  const std::optional<MonomialOrder> whole_order =
+      options.order == EliminationOrder::lex ? std::optional(MonomialOrder::lex()) : std::nullopt;
   auto modular_elimination = [&] {
     auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
     generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
-                                         result.stats);
+                                         result.stats, whole_order);
   };
   const std::optional<double> interpolation =
       options.interpolate && modular && options.order != EliminationOrder::lex && parameters_left
@@ -360,7 +364,7 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
     done = true;
   }
   if (!done) result.method = elimination_method;
-  if (!done && (options.order == EliminationOrder::lex || !modular)) {
+  if (!done && !modular) {
     GroebnerResult basis = options.order == EliminationOrder::lex
                                ? lex_elimination(problem, result.ring, options.groebner)
                                : eliminate(problem.ideal, problem.eliminated, options.groebner, result.ring->order());
