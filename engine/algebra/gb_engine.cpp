@@ -137,6 +137,8 @@ template <class D>
 void Engine<D>::insert(P h) {
   const std::size_t stride = layout_.stride();
   const auto k = static_cast<std::uint32_t>(basis_.size());
+  // The criteria look at every element once per insertion.
+  monitor_.add_work(k);
   basis_bytes_ += h.bytes();
   Element element{std::move(h), 0};
   element.mask = layout_.divmask(element.poly.mons.data());
@@ -249,6 +251,7 @@ void Engine<D>::load_s_polynomial(std::uint32_t i, std::uint32_t j, const Word* 
   const std::size_t stride = layout_.stride();
   const P& f = basis_[i].poly;
   const P& g = basis_[j].poly;
+  monitor_.add_work(f.size() + g.size());
   Coeff scale{}, multiplier{};
   domain_.cancel_factors(f.coeffs.front(), g.coeffs.front(), scale, multiplier);
   domain_.negate(multiplier);

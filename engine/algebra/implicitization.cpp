@@ -5,6 +5,7 @@
 #include "algebra/implicit_interpolation.h"
 #include "algebra/ideal_operations.h"
 #include "algebra/polynomial_gcd.h"
+#include "algebra/rational_circles.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -14,10 +15,12 @@ namespace sdfwb::algebra {
 namespace {
 
 // The share of interpolation's expected cost (multiplications modulo a
-// prime) that elimination may spend first, in term operations (each about
-// as costly as a few multiplications): a trial that fails wastes a few
-// percent of the interpolation after it.
-constexpr double kEliminationTrialShare = 1.0 / 128;
+// prime) that elimination may spend first, in the monitor's work units
+// (term operations and pair bookkeeping). Measured on the benchmark's
+// cases (docs/algebra-benchmark.md), a unit costs about as much as 500 of
+// FLINT's dense multiplications, so a failed trial takes at most about half
+// the interpolation's expected time.
+constexpr double kEliminationTrialShare = 1.0 / 1024;
 
 struct Fractions {
   RingPtr ring;  // parameters, degrevlex
@@ -271,7 +274,10 @@ EliminationProblem substitute_linear_parameters(const EliminationProblem& proble
   return EliminationProblem{Ideal(smaller, moved), kept};
 }
 
-ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
+namespace {
+
+ImplicitizationResult implicitize_with(const RationalParametrization& p, const ImplicitizationOptions& options,
+                                       BudgetMonitor& monitor) {
   EliminationProblem problem = implicitization_ideal(p, options.denominator);
   // The auxiliary variable of Theorem 1.8 comes first when there is one.
   const bool has_denominator = problem.eliminated.size() > p.parameters.size();
@@ -279,7 +285,6 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   result.ring = Ring::make(p.coordinates, coordinate_order(options.order));
   const bool modular = options.groebner.method != GroebnerMethod::rational;
   std::vector<Polynomial> generators;
-  BudgetMonitor monitor(options.groebner.budget);
   bool done = false, substituted = false;
   if (options.substitute_linear) {
     const std::size_t before = problem.eliminated.size();
@@ -386,6 +391,39 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
     for (const Polynomial& g : generators) result.generators.push_back(g.in_ring(result.ring).primitive());
   }
   return result;
+}
+
+}  // namespace
+
+ImplicitizationResult implicitize(const RationalParametrization& p, const ImplicitizationOptions& options) {
+  BudgetMonitor monitor(options.groebner.budget);
+  // cos/sin variables: the circle's rational parametrization removes their
+  // relations, and interpolation applies. As for polynomial
+  // parametrizations, elimination of the given form runs first within a
+  // share of interpolation's expected cost (the relations keep it small on
+  // some surfaces, and the half-angle form's denominators raise degrees).
+  const bool modular = options.groebner.method != GroebnerMethod::rational;
+  if (options.interpolate && modular && options.order != EliminationOrder::lex && !p.relations.empty()) {
+    prepare(p);  // the input's errors, before any conversion
+    if (std::optional<RationalParametrization> rational = rational_circles(p)) {
+      if (std::optional<double> cost = interpolation_cost(*rational); cost && options.elimination_trial) {
+        monitor.limit_work(static_cast<std::uint64_t>(*cost * kEliminationTrialShare));
+        try {
+          ImplicitizationResult result = implicitize_with(p, options, monitor);
+          monitor.limit_work(std::nullopt);
+          return result;
+        } catch (const WorkLimitReached&) {
+          monitor.limit_work(std::nullopt);
+        }
+      }
+      if (rational->relations.empty()) {
+        ImplicitizationResult result = implicitize_with(*rational, options, monitor);
+        result.method = "half-angle+" + result.method;
+        return result;
+      }
+    }
+  }
+  return implicitize_with(p, options, monitor);
 }
 
 ClearedParametrization clear_denominators(const RationalParametrization& p) {

@@ -3,6 +3,7 @@
 // result vanishes on the parametrization exactly.
 
 #include "algebra/implicitization.h"
+#include "algebra/rational_circles.h"
 
 #include <gtest/gtest.h>
 
@@ -91,6 +92,37 @@ TEST(Implicitization, CircleWithTrigRelation) {
   Polynomial t = half->var("t");
   RationalParametrization rational{{"t"}, {"x", "y"}, {1 - pow(t, 2), 2 * t}, {1 + pow(t, 2), 1 + pow(t, 2)}, {}};
   EXPECT_EQ(strings(checked(rational).generators), (std::vector<std::string>{"x^2 + y^2 - 1"}));
+}
+
+TEST(Implicitization, CosSinRelationsBecomeTheCircleParametrization) {
+  // Each c^2 + s^2 - 1 (times a constant) gives one parameter and no
+  // relation; another relation is rewritten, one of another shape is kept.
+  auto ring = Ring::make({"c", "s", "r"});
+  Polynomial c = ring->var("c"), s = ring->var("s"), r = ring->var("r");
+  RationalParametrization p{{"c", "s", "r"}, {"x", "y", "z"}, {r * c, r * s, c}, {r, 1 + 0 * r, 2 + s},
+                            {3 * pow(c, 2) + 3 * pow(s, 2) - 3, pow(r, 2) - c}};
+  std::optional<RationalParametrization> rational = rational_circles(p);
+  ASSERT_TRUE(rational);
+  EXPECT_EQ(rational->parameters.size(), 2u);
+  ASSERT_EQ(rational->relations.size(), 1u);
+  EXPECT_FALSE(rational_circles(*rational));
+  RationalParametrization ellipse = p;
+  ellipse.relations = {pow(c, 2) + 2 * pow(s, 2) - 1};
+  EXPECT_FALSE(rational_circles(ellipse));
+  // Dupin's cyclide with cos/sin variables goes by interpolation of the
+  // rational form; the equation is the one of the half-angle input.
+  std::map<std::string, Polynomial> by_name;
+  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+    if (example.name.rfind("dupin-cyclide/", 0) != 0) continue;
+    ImplicitizationResult result = implicitize(example.parametrization);
+    ASSERT_TRUE(result.ok()) << result.message;
+    by_name.emplace(example.name, result.generators.at(0));
+    if (example.name == "dupin-cyclide/cs") {
+      EXPECT_EQ(result.method, "half-angle+interpolation");
+    }
+  }
+  ASSERT_EQ(by_name.size(), 2u);
+  EXPECT_EQ(by_name.at("dupin-cyclide/cs"), by_name.at("dupin-cyclide/half-angle"));
 }
 
 TEST(Implicitization, ReducesFractionsBeforeTakingTheLcm) {
