@@ -6,7 +6,9 @@
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
+#include <chrono>
 #include <future>
+#include <memory>
 #include <random>
 #include <thread>
 
@@ -327,6 +329,34 @@ Polynomial to_polynomial(const std::vector<std::vector<Exponent>>& monomials, co
 
 std::size_t matrix_bytes(std::size_t columns) { return 2 * (columns + 8) * columns * sizeof(mp_limb_t); }
 
+using Monomials = std::vector<std::vector<Exponent>>;
+
+// One nullspace on a thread of its own. FLINT's nmod_mat_nullspace cannot
+// be interrupted, so the caller waits for it checking the budget, and on a
+// cancel or a limit leaves it: the thread finishes that one matrix (it owns
+// its inputs) and exits, while the computation reports at once.
+std::future<PrimeImage> start_nullspace(std::shared_ptr<const Homogeneous> h, std::shared_ptr<const Monomials> monomials,
+                                        Exponent degree, mp_limb_t prime) {
+  std::packaged_task<PrimeImage()> task(
+      [h = std::move(h), monomials = std::move(monomials), degree, prime] {
+        return nullspace_mod(*h, *monomials, degree, prime);
+      });
+  std::future<PrimeImage> result = task.get_future();
+  std::thread(std::move(task)).detach();
+  return result;
+}
+
+// Below this many columns a nullspace takes a few milliseconds: the search
+// computes it on the calling thread (a thread would cost more than the
+// wait for a cancel).
+constexpr std::size_t kThreadedColumns = 256;
+
+PrimeImage wait_for(std::future<PrimeImage>& image, BudgetMonitor& monitor, const Progress& progress,
+                    std::size_t own_bytes) {
+  while (image.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) monitor.check(progress, own_bytes);
+  return image.get();
+}
+
 bool applies(const RationalParametrization& p) {
   return p.relations.empty() && p.parameters.size() + 1 == p.coordinates.size();
 }
@@ -353,7 +383,8 @@ std::optional<double> interpolation_cost(const RationalParametrization& p) {
 std::optional<Polynomial> implicitize_by_interpolation(const RationalParametrization& p, const RingPtr& coordinates,
                                                        BudgetMonitor& monitor, GroebnerStats& stats) {
   if (!applies(p)) return std::nullopt;
-  const Homogeneous h = homogeneous_form(clear_denominators(p));
+  const auto shared = std::make_shared<const Homogeneous>(homogeneous_form(clear_denominators(p)));
+  const Homogeneous& h = *shared;
   if (h.total_degree == 0) return std::nullopt;
   const std::size_t variables = h.polys.size();
   std::vector<std::size_t> coordinate_index;
@@ -381,7 +412,13 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
         if (columns > kMaxInterpolationMonomials) return 0;
         monitor.check(progress, matrix_bytes(columns));
         const Exponent e = static_cast<Exponent>(d);
-        first = nullspace_mod(h, monomials_of_degree(variables, e), e, p0);
+        auto monomials = std::make_shared<const Monomials>(monomials_of_degree(variables, e));
+        if (columns < kThreadedColumns) {
+          first = nullspace_mod(h, *monomials, e, p0);
+        } else {
+          std::future<PrimeImage> image = start_nullspace(shared, std::move(monomials), e, p0);
+          first = wait_for(image, monitor, progress, matrix_bytes(columns));
+        }
         if (first.nullity == 1) return e;
         if (first.nullity > 1) break;
       }
@@ -393,7 +430,8 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
   for (;;) {
     const Exponent degree = search_degree();
     if (degree == 0) return std::nullopt;
-    const std::vector<std::vector<Exponent>> monomials = monomials_of_degree(variables, degree);
+    const auto shared_monomials = std::make_shared<const Monomials>(monomials_of_degree(variables, degree));
+    const Monomials& monomials = *shared_monomials;
     const std::size_t own_bytes = matrix_bytes(monomials.size()) * workers;
 
     // 2.-4. More primes, a batch of one per worker at a time, until a
@@ -408,11 +446,10 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
       monitor.check(progress, own_bytes);
       std::vector<std::future<PrimeImage>> batch;
       for (unsigned w = 0; w < workers; ++w) {
-        batch.push_back(std::async(std::launch::async, nullspace_mod, std::cref(h), std::cref(monomials), degree,
-                                   next_prime()));
+        batch.push_back(start_nullspace(shared, shared_monomials, degree, next_prime()));
       }
       for (std::future<PrimeImage>& f : batch) {
-        PrimeImage image = f.get();
+        PrimeImage image = wait_for(f, monitor, progress, own_bytes);
         ++stats.primes;
         if (restart) continue;
         // A zero nullspace: the first prime's points were unlucky and its

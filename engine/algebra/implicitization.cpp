@@ -402,8 +402,10 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   // parametrizations, elimination of the given form runs first within a
   // share of interpolation's expected cost (the relations keep it small on
   // some surfaces, and the half-angle form's denominators raise degrees).
+  // Under lex too: there the rational form is eliminated, not interpolated,
+  // but it is the smaller problem in the same cases.
   const bool modular = options.groebner.method != GroebnerMethod::rational;
-  if (options.interpolate && modular && options.order != EliminationOrder::lex && !p.relations.empty()) {
+  if (options.interpolate && modular && !p.relations.empty()) {
     prepare(p);  // the input's errors, before any conversion
     if (std::optional<RationalParametrization> rational = rational_circles(p)) {
       if (std::optional<double> cost = interpolation_cost(*rational); cost && options.elimination_trial) {

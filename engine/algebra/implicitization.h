@@ -56,8 +56,9 @@ enum class EliminationOrder {
   block_deglex,  // the coordinates by deglex
   block_lex,     // the coordinates by lex
   /// Pure lex over the parameters, then the coordinates: Theorem 1.7 as the
-  /// textbook states it. The whole ideal's lex basis is computed, so this is
-  /// the slowest; its result equals block_lex's.
+  /// textbook states it. The whole ideal's lex basis is computed modulo
+  /// primes (only its elimination part is lifted to Q), so this is the
+  /// slowest; it never interpolates; its result equals block_lex's.
   lex,
 };
 
