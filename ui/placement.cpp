@@ -17,6 +17,7 @@ namespace sdfwb::ui {
 namespace {
 
 constexpr int kClearingSteps = 32;  // moves toward the eye before giving up on a free spot
+constexpr int kSettlingSteps = 16;  // bisections back towards the last spot that was not free
 constexpr double kGap = 0.1;        // between a duplicate and its original, of the original's size
 
 // How far a box of half extents `half` reaches along unit direction `n`.
@@ -79,14 +80,22 @@ bool takesAnotherChild(const scene::Node& node) {
 template <typename Allowed>
 bool clearAlong(const scene::Scene& scene, const program::Program& program, glm::dvec3& point, const glm::dvec3& half,
                 const glm::dvec3& direction, Allowed allowed, bool stopWhenRefused) {
-    glm::dvec3 moved = point;
+    glm::dvec3 moved = point, blocked = point;
+    auto free = [&](const glm::dvec3& p) { return allowed(p) && isClear(scene, program, p, half); };
     for (int i = 0; i < kClearingSteps; ++i) {
         bool ok = allowed(moved);
         if (ok && isClear(scene, program, moved, half)) {
+            // a step can overshoot the free spot by up to the box's reach:
+            // back to just clear, so the box touches what it was moved off
+            for (int k = 0; k < kSettlingSteps && i > 0; ++k) {
+                glm::dvec3 middle = 0.5 * (blocked + moved);
+                (free(middle) ? moved : blocked) = middle;
+            }
             point = moved;
             return true;
         }
         if (!ok && stopWhenRefused) return false;
+        blocked = moved;
         double reach = support(half, direction);
         double d = cpu::fieldDistance(scene, program, moved);
         moved += direction * std::max(reach - d, 0.05 * reach + 1e-3);
@@ -97,24 +106,30 @@ bool clearAlong(const scene::Scene& scene, const program::Program& program, glm:
 }  // namespace
 
 glm::dvec3 placementPoint(const scene::Scene& scene, const glm::dvec3& half) {
-    // the view centre's ray: pixel (1, 1) of a 2 x 2 image looks straight ahead
-    program::Program program = program::compileScene(scene, {2, 2, 1});
-    cpu::PickResult centre = cpu::pickPixel(scene, program, 1.0, 1.0);
+    program::Program program = program::compileScene(scene, {2, 2, 1});  // fields only: any image size
+    cpu::PickResult centre = cpu::pickViewCentre(scene);
     scene::CameraFrame frame = scene::cameraFrame(scene.camera);
     glm::dvec3 point = centre.hit ? centre.position + centre.normal * support(half, centre.normal) : scene.camera.target;
     // inside or through something (a gap too narrow, a target inside a solid):
-    // rise until free (on top of what is there), else come towards the eye
-    // along the centre ray, never around or behind the eye; else go beyond
-    // in front of the eye and not around it
+    // rise until free (on top of what is there) as long as the box still
+    // covers the view centre, else come towards the eye along the centre ray,
+    // never around or behind the eye; else go beyond in front of the eye and
+    // not around it
     auto inFront = [&](const glm::dvec3& p) {
         glm::dvec3 gap = glm::abs(p - frame.eye) - 1.1 * half;
         return glm::dot(p - frame.eye, frame.forward) > 0 && std::max({gap.x, gap.y, gap.z}) > 0;
+    };
+    auto seenAtCentre = [&](const glm::dvec3& p) {
+        glm::dvec3 off = p - frame.eye;
+        off -= frame.forward * glm::dot(off, frame.forward);  // from the centre ray to p
+        double distance = glm::length(off);
+        return inFront(p) && (distance < 1e-12 || distance <= support(half, off / distance) * (1.0 + 1e-9));
     };
     // a surface right in front of the eye leaves no room: farther along the ray
     double nearest = support(half, frame.forward);
     if (!inFront(point)) point += frame.forward * (nearest - glm::dot(point - frame.eye, frame.forward));
     auto anywhere = [](const glm::dvec3&) { return true; };
-    if (!clearAlong(scene, program, point, half, glm::dvec3(0, 1, 0), inFront, false) &&
+    if (!clearAlong(scene, program, point, half, glm::dvec3(0, 1, 0), seenAtCentre, true) &&
         !clearAlong(scene, program, point, half, -frame.forward, inFront, true)) {
         // no room in front: beyond, level (the ground stays below)
         glm::dvec3 level = glm::dvec3(frame.forward.x, 0, frame.forward.z);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cpu/cpu_renderer.h"
+#include "program/compile_scene.h"
 #include "expr/tape.h"
 #include "prune/prune_grid.h"
 #include "scene/camera_frame.h"
@@ -157,6 +158,11 @@ PickResult pickPixel(const scene::Scene& scene, const program::Program& program,
     pick.ground = shape == kGround;
     pick.node = pathOfShape(scene, program, shape);
     return pick;
+}
+
+PickResult pickViewCentre(const scene::Scene& scene) {
+    program::Program program = program::compileScene(scene, {.aa = 1});
+    return pickPixel(scene, program, 0.5 * program.width, 0.5 * program.height);
 }
 
 }  // namespace sdfwb::cpu

@@ -41,6 +41,12 @@ struct PickResult {
 // `program` must be compileScene(scene, ...) of this `scene`.
 PickResult pickPixel(const scene::Scene& scene, const program::Program& program, double x, double y);
 
+// The ray through the view centre, traced at the scene's own image size (its
+// render.width x render.height): the hit epsilon is that of the pixels the
+// user sees. (Through the corner of a 2 x 2 image the pixel epsilon is a fifth
+// of the distance, and a ray passing 0.05 from a ball counted as meeting it.)
+PickResult pickViewCentre(const scene::Scene& scene);
+
 // The primitive deciding the field at a world point (nullopt: the ground, or
 // no primitive at all).
 std::optional<std::vector<int>> primitiveAt(const scene::Scene& scene, const program::Program& program,

@@ -2,6 +2,8 @@
 // looks, on the surface under the view centre, clear of other objects; a
 // duplicate beside its original; one undo step each.
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -41,9 +43,11 @@ TEST(Placement, ANewSphereRestsOnTheSurfaceUnderTheViewCentre) {
     // clear of everything else, the ground included, and touching it
     double clearance = fieldWithout(editor.scene(), parentOf(sphere), centre);
     EXPECT_GE(clearance, 0.999);
-    EXPECT_LT(clearance, 1.5);  // near what the centre ray met
-    // Not asserted since the tracer changes of issue 14 landed: that the view centre's pick
-    // names the new sphere (it names the object behind which the sphere was risen); open in issue 13.
+    // near what it was moved off: its bounding box, of half extent 1, touches
+    // it, up to sqrt(3) away along a diagonal
+    EXPECT_LT(clearance, std::sqrt(3.0) + 0.01);
+    // the user sees it at the view centre
+    EXPECT_EQ(cpu::pickViewCentre(editor.scene()).node, sphere);
     ASSERT_TRUE(editor.undo());
     EXPECT_EQ(editor.scene(), defaultScene());
 }
