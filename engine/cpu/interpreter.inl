@@ -3,7 +3,8 @@
 // "prune/prune_grid.h" and "sdf/shared.h". No include guard.
 
 inline Material materialAtSlot(const vec4* params, int slot) {
-    return materialFromSlots(params[slot], params[slot + 1], params[slot + 2], params[slot + 3]);
+    return materialFromSlots(params[slot], params[slot + 1], params[slot + 2], params[slot + 3], params[slot + 4],
+                             params[slot + 5]);
 }
 
 // Per-thread working memory of one program: register files and formula evaluators.
@@ -144,6 +145,7 @@ struct SampleDriver {
 
     vec4 P(int slot) const { return params[slot]; }
     Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p); }
+    bool secondaryRays() const { return program.secondaryRays; }
 
 #include "sdf/glsl/sample_driver.glsl"
 };

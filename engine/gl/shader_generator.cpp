@@ -14,7 +14,6 @@ using program::opcodeInfo;
 
 namespace {
 
-// Uniforms and helpers between the shared library and map(); names match gl_renderer.cpp.
 // Uniforms and helpers between the shared library and map(); names match
 // gl_renderer.cpp. Everything else the tracer reads is in the parameter buffer.
 constexpr std::string_view kInterface = R"(
@@ -31,7 +30,9 @@ invariant outColor;
 invariant outStats;
 
 vec4 P(int slot) { return texelFetch(uParams, slot); }
-Material M(int slot) { return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3)); }
+Material M(int slot) {
+    return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3), P(slot + 4), P(slot + 5));
+}
 )";
 
 constexpr std::string_view kMain = R"(
@@ -122,6 +123,8 @@ std::string generateFragmentShader(const program::Program& program) {
         emitInstruction(out, in);
     }
     out << "    return " << sample(program.result) << ";\n}\n";
+    // a constant: scenes without mirrors or glass compile no ray tree
+    out << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n";
     out << sdf::glslSampleDriver() << kMain;
     return out.str();
 }
@@ -133,7 +136,9 @@ int worstCaseBackEdges(const program::Program& program) {
     settings.aoSamples = t.aoSamples;
     settings.shadowSteps = t.shadowSteps;
     settings.lightCount = static_cast<int>(program.lights.size());
-    return sdf::f32::traceIterationBound(settings);
+    settings.maxDepth = t.maxDepth;
+    static_assert(sdf::f32::RAY_TREE_ITERATION_CAP < kLoopLimiter);
+    return program.secondaryRays ? sdf::f32::rayTreeIterationBound(settings) : sdf::f32::traceIterationBound(settings);
 }
 
 }  // namespace sdfwb::gl

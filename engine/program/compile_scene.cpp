@@ -268,9 +268,18 @@ private:
     }
 
     int addMaterial(const scene::Material& m) {
-        shared::Material packed{.ambient = m.ambient, .diffuse = m.diffuse, .specular = m.specular,
-                                .shininess = m.shininess, .emission = m.emission,
-                                .emissionStrength = m.emissionStrength};
+        shared::Material packed{.ambient = m.ambient,
+                                .diffuse = m.diffuse,
+                                .specular = m.specular,
+                                .shininess = m.shininess,
+                                .emission = m.emission,
+                                .emissionStrength = m.emissionStrength,
+                                .reflectivity = m.reflectivity,
+                                .reflectionColor = m.reflectionColor,
+                                .transparency = m.transparency,
+                                .transmissionColor = m.transmissionColor,
+                                .ior = m.ior,
+                                .fresnel = m.fresnel ? 1.0 : 0.0};
         int first = static_cast<int>(program_.params.size());
         for (int i = 0; i < shared::MATERIAL_SLOTS; ++i) program_.params.push_back(shared::materialSlot(packed, i));
         return first;
@@ -440,7 +449,9 @@ void writeSceneBlocks(Program& program, const scene::RenderSettings& r) {
                                    .lightCount = static_cast<int>(program.lights.size()),
                                    .exposure = r.exposure,
                                    .ambientLight = t.ambientLight,
-                                   .background = t.background};
+                                   .background = t.background,
+                                   .maxDepth = t.maxDepth,
+                                   .rayWeightCutoff = r.rayWeightCutoff};
     for (int i = 0; i < shared::TRACE_SLOTS; ++i) {
         program.params[static_cast<size_t>(shared::TRACE_SLOT + i)] = shared::traceSettingsSlot(settings, i);
     }
@@ -506,6 +517,12 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     t.aoDistance = r.aoDistance;
     t.lightingModel = static_cast<int>(r.lighting);
     t.stepRelaxation = r.stepRelaxation;
+    t.maxDepth = r.maxDepth;
+    static_assert(scene::kMaxTraceDepth == shared::MAX_TRACE_DEPTH);
+    program.secondaryRays =
+        r.maxDepth > 0 && std::any_of(scene.materials.begin(), scene.materials.end(), [](const scene::Material& m) {
+            return m.reflectivity > 0 || m.transparency > 0;
+        });
     t.ambientLight = scene.environment.ambient;
     t.background = scene.environment.background;
     for (const scene::Light& light : scene.lights) {
@@ -534,6 +551,7 @@ std::uint64_t Program::structureKey() const {
     }
     mix(pointRegisters);
     mix(sampleRegisters);
+    mix(secondaryRays);
     mix(result);
     for (const FormulaCode& formula : formulas) {
         mix(formula.withGradient);

@@ -57,6 +57,7 @@ struct TraceParams {
     double aoDistance;
     int lightingModel;  // LIGHTING_*
     double stepRelaxation;
+    int maxDepth;       // bounces of the ray tree
     glm::dvec3 ambientLight;
     glm::dvec3 background;
 };
@@ -87,6 +88,10 @@ struct Program {
     CameraParams camera;
     TraceParams trace;
     std::vector<LightParams> lights;
+    // Some material reflects or transmits and max_depth > 0: the backends
+    // trace ray trees (sdf/glsl/ray_tree.glsl); structural, as GLSL compiles
+    // the tree only then.
+    bool secondaryRays = false;
     int width = 0;
     int height = 0;
     int aa = 1;

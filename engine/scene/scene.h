@@ -56,6 +56,14 @@ struct Material {
     double shininess = 32.0;    // alpha
     glm::dvec3 emission{0.0};   // L_E
     double emissionStrength = 1.0;  // multiplies L_E
+    // Ray tracing (lecture notes, section 2): secondary rays carry these
+    // fractions of the light seen in the mirror direction and through the surface.
+    double reflectivity = 0.0;            // k_ps, perfect-mirror fraction
+    glm::dvec3 reflectionColor{1.0};      // M_PS
+    double transparency = 0.0;            // k_t, transmitted fraction
+    glm::dvec3 transmissionColor{1.0};    // M_T
+    double ior = 1.5;                     // index of refraction (outside: 1)
+    bool fresnel = false;                 // Schlick's weights instead of the notes' fixed k_ps, k_t
 
     bool operator==(const Material&) const = default;
 };
@@ -76,6 +84,8 @@ inline constexpr int kMaxAa = 8;
 inline constexpr int kMaxSteps = 8192;       // primary march
 inline constexpr int kMaxShadowSteps = 4096;
 inline constexpr int kMaxAoSamples = 64;
+// Bounces of a ray tree (render.max_depth): up to 2^(d+1) - 1 rays per sample.
+inline constexpr int kMaxTraceDepth = 6;
 
 // Choices of the format, each with its JSON names in enum order. The shared
 // tracer's codes (SHADOW_*, LIGHTING_*, GROUND_*) are checked against these
@@ -108,6 +118,8 @@ struct RenderSettings {
     LightingModel lighting = LightingModel::BlinnPhong;
     double exposure = 1.0;           // multiplies the final linear colour
     double stepRelaxation = 1.0;     // omega of over-relaxed primary steps, 1 to 1.9; 1 is plain sphere tracing
+    int maxDepth = 4;                // bounces of reflected and refracted rays, 0 to kMaxTraceDepth
+    double rayWeightCutoff = 1.0 / 256.0;  // secondary rays weighing less (every channel) are not traced
 
     bool operator==(const RenderSettings&) const = default;
 };

@@ -33,6 +33,9 @@ const Setting<RenderSettings> kRender[] = {
     {"step_relaxation", "step relaxation", "", Real, &RenderSettings::stepRelaxation, Closed, 1, 1.9, {},
      {0.01, 1, 1.9}},
     {"exposure", "exposure", "", Real, &RenderSettings::exposure, Positive, 0, 0, {}, {0.01, 1e-3, 1e3}},
+    {"max_depth", "recursion depth", "", Integer, &RenderSettings::maxDepth, Any, 0, kMaxTraceDepth, {}, {0.05}},
+    {"ray_weight_cutoff", "ray weight cutoff", "", Real, &RenderSettings::rayWeightCutoff, Closed, 0, 1, {},
+     {0.001, 0, 1, "%.4f"}},
 };
 
 const Setting<Environment> kEnvironment[] = {
@@ -65,6 +68,12 @@ const Setting<Material> kMaterial[] = {
     {"emission", "emission", "", Colour, &Material::emission},
     {"emission_strength", "emission strength", "", Real, &Material::emissionStrength, NonNegative, 0, 0, {},
      {0.01, 0.0, 1e3}},
+    {"reflectivity", "mirror k_ps", "", Real, &Material::reflectivity, Closed, 0, 1, {}, {0.005, 0, 1}},
+    {"reflection_color", "mirror colour M_PS", "", Colour, &Material::reflectionColor},
+    {"transparency", "transmission k_t", "", Real, &Material::transparency, Closed, 0, 1, {}, {0.005, 0, 1}},
+    {"transmission_color", "transmission colour M_T", "", Colour, &Material::transmissionColor},
+    {"ior", "index of refraction", "", Real, &Material::ior, Closed, 0.2, 4, {}, {0.005, 0.2, 4}},
+    {"fresnel", "Fresnel (Schlick)", "", Flag, &Material::fresnel},
 };
 
 }  // namespace

@@ -42,5 +42,6 @@ SHARED_FN real libraryCos(real x) {
 #include "sdf/glsl/instructions.glsl"
 #include "sdf/glsl/parameter_blocks.glsl"
 #include "sdf/glsl/tracer.glsl"
+#include "sdf/glsl/ray_tree.glsl"
 
 }  // namespace SDFWB_SHARED_NS

@@ -1,5 +1,6 @@
 // Rendering benchmarks: CPU thread scaling on the default scene, GL shader
-// compile time against scene size (cold Mesa cache), GL against CPU time.
+// compile time against scene size (cold Mesa cache), GL against CPU time, the
+// cost of the ray tree (mirrors and glass) against the same scenes without it.
 // Run: build/tests/bench/render_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
 
 #include <cstdlib>
@@ -67,6 +68,30 @@ void BM_GlDefault1280x720(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_GlDefault1280x720)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// What mirrors and glass cost: a scene with its ray tree (range 1) and the
+// same scene with max_depth 0 (range 0: no tree compiled, primary rays only),
+// 480x270 AA 1, CPU (2 threads) and GL, in one run.
+void rayTreeCost(benchmark::State& state, const char* file, bool gl) {
+    scene::Scene s = scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR "/scenes/") + file);
+    if (state.range(0) == 0) s.render.maxDepth = 0;
+    program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
+    if (!gl) {
+        for (auto _ : state) benchmark::DoNotOptimize(cpu::renderCpu(p, {.threads = 2}));
+        return;
+    }
+    gl::GlRenderer renderer(context().gl());
+    renderer.prepare(p);
+    for (auto _ : state) benchmark::DoNotOptimize(renderer.render(p));
+}
+BENCHMARK_CAPTURE(rayTreeCost, mirrors_cpu, "tutorial/08_mirrors.json", false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, mirrors_gl, "tutorial/08_mirrors.json", true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, glass_cpu, "tutorial/09_glass.json", false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, glass_gl, "tutorial/09_glass.json", true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 }  // namespace sdfwb

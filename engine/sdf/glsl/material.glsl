@@ -7,28 +7,42 @@ struct Material {
     real shininess; // alpha
     vec3 emission;  // L_E
     real emissionStrength;  // multiplies L_E; 1 is the colour as given
+    real reflectivity;      // k_ps (ray_tree.glsl)
+    vec3 reflectionColor;   // M_PS
+    real transparency;      // k_t
+    vec3 transmissionColor; // M_T
+    real ior;               // index of refraction against the outside's 1
+    real fresnel;           // 0: the notes' fixed fractions, 1: Schlick's; a smooth blend mixes them
 };
 
-// ---- Material: (ambient, shininess), (diffuse, 0), (specular, 0), (emission, emissionStrength) ----
-SHARED_FN Material materialFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
-    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3), q3.w);
+// ---- Material: (ambient, shininess), (diffuse, ior), (specular, fresnel), (emission, emissionStrength),
+// (reflectionColor, reflectivity), (transmissionColor, transparency) ----
+SHARED_FN Material materialFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4, vec4 q5) {
+    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3), q3.w, q4.w, xyz(q4), q5.w, xyz(q5), q1.w, q2.w);
 }
 SHARED_FN vec4 materialSlot(Material m, int i) {
     if (i == 0) {
         return vec4(m.ambient, m.shininess);
     }
     if (i == 1) {
-        return vec4(m.diffuse, real(0));
+        return vec4(m.diffuse, m.ior);
     }
     if (i == 2) {
-        return vec4(m.specular, real(0));
+        return vec4(m.specular, m.fresnel);
     }
-    return vec4(m.emission, m.emissionStrength);
+    if (i == 3) {
+        return vec4(m.emission, m.emissionStrength);
+    }
+    if (i == 4) {
+        return vec4(m.reflectionColor, m.reflectivity);
+    }
+    return vec4(m.transmissionColor, m.transparency);
 }
 
 // No material: what the tracer holds before a hit.
 SHARED_FN Material noMaterial() {
-    return Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)), real(1));
+    return Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)), real(1), real(0),
+                    vec3(real(1)), real(0), vec3(real(1)), real(1), real(0));
 }
 
 SHARED_FN Material mixMaterial(Material a, Material b, real w) {
@@ -40,7 +54,11 @@ SHARED_FN Material mixMaterial(Material a, Material b, real w) {
     }
     return Material(lerp3s(a.ambient, b.ambient, w), lerp3s(a.diffuse, b.diffuse, w),
                     lerp3s(a.specular, b.specular, w), lerpr(a.shininess, b.shininess, w),
-                    lerp3s(a.emission, b.emission, w), lerpr(a.emissionStrength, b.emissionStrength, w));
+                    lerp3s(a.emission, b.emission, w), lerpr(a.emissionStrength, b.emissionStrength, w),
+                    lerpr(a.reflectivity, b.reflectivity, w), lerp3s(a.reflectionColor, b.reflectionColor, w),
+                    lerpr(a.transparency, b.transparency, w),
+                    lerp3s(a.transmissionColor, b.transmissionColor, w), lerpr(a.ior, b.ior, w),
+                    lerpr(a.fresnel, b.fresnel, w));
 }
 
 // A point of the scene's field. `d` is the distance estimate the tracer tests
@@ -84,7 +102,9 @@ SHARED_FN Material groundMaterial(Material base, vec3 worldPoint, int pattern, r
         useSecond = du < halfLine || dv < halfLine;
     }
     if (useSecond) {
-        return Material(secondColor, secondColor, base.specular, base.shininess, base.emission, base.emissionStrength);
+        return Material(secondColor, secondColor, base.specular, base.shininess, base.emission, base.emissionStrength,
+                        base.reflectivity, base.reflectionColor, base.transparency, base.transmissionColor, base.ior,
+                        base.fresnel);
     }
     return base;
 }

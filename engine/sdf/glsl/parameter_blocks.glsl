@@ -27,6 +27,8 @@ struct TraceSettings {
     real exposure;           // multiplies the final linear colour
     vec3 ambientLight;       // L_A
     vec3 background;
+    int maxDepth;            // bounces of the ray tree (ray_tree.glsl)
+    real rayWeightCutoff;    // secondary rays lighter than this in every channel are dropped
 };
 
 const int MAX_LIGHTS = 8;
@@ -37,14 +39,14 @@ const int CAMERA_SLOTS = 4;
 const int LIGHT_SLOT = 9;       // CAMERA_SLOT + CAMERA_SLOTS
 const int LIGHT_SLOTS = 2;      // per light; unused lights are zero
 const int MATERIAL_SLOT = 25;   // LIGHT_SLOT + MAX_LIGHTS * LIGHT_SLOTS: the default material
-const int MATERIAL_SLOTS = 4;
+const int MATERIAL_SLOTS = 6;
 
 // ---- TraceSettings: (maxSteps, maxDistance, epsilon, epsilonPerDistance),
 // (shadowMode, shadowSteps, aoSamples, aoDistance), (lightingModel, relaxation,
-// lightCount, exposure), (ambientLight, 0), (background, 0) ----
+// lightCount, exposure), (ambientLight, maxDepth), (background, rayWeightCutoff) ----
 SHARED_FN TraceSettings traceSettingsFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4) {
     return TraceSettings(int(q0.x), q0.y, q0.z, q0.w, int(q1.x), int(q1.y), int(q1.z), q1.w, int(q2.x), q2.y,
-                         int(q2.z), q2.w, xyz(q3), xyz(q4));
+                         int(q2.z), q2.w, xyz(q3), xyz(q4), int(q3.w), q4.w);
 }
 SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
     if (i == 0) {
@@ -57,9 +59,9 @@ SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
         return vec4(real(s.lightingModel), s.relaxation, real(s.lightCount), s.exposure);
     }
     if (i == 3) {
-        return vec4(s.ambientLight, real(0));
+        return vec4(s.ambientLight, real(s.maxDepth));
     }
-    return vec4(s.background, real(0));
+    return vec4(s.background, s.rayWeightCutoff);
 }
 
 // ---- Camera: (origin, tanHalfFov), (forward, 0), (right, 0), (up, 0) ----

@@ -1,6 +1,7 @@
 // The per-sample driver loop, the same code in both backends, bound included.
-// It needs two things from its backend: P(slot), a slot of the parameter
-// buffer, and map(p), the scene's field. GLSL: the generated functions before
+// It needs three things from its backend: P(slot), a slot of the parameter
+// buffer, map(p), the scene's field, and secondaryRays(), whether the scene
+// has mirrors or glass. GLSL: the generated functions before
 // it; C++: members of the struct this file is included in (cpu/interpreter.inl).
 // One call site of map() (compile cost grows with call sites, see
 // docs/toolchain-notes.md).
@@ -24,21 +25,39 @@ SHARED_FN Light sceneLight(int index) {
 // One sub-sample at (px, py) pixels from the bottom-left corner of a
 // width x height image. The loop ends at PHASE_DONE; traceIterationBound caps
 // it for both backends alike (llvmpipe's limiter, docs/toolchain-notes.md).
+// A scene with mirrors or glass (secondaryRays(), supplied by the backend
+// with P and map: a constant in GLSL, so other scenes compile none of it)
+// walks its ray tree in the same loop, under rayTreeIterationBound.
 SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     TraceSettings settings = sceneTraceSettings();
     TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
     Sample field = shapeSample(real(0), s.material);
-    int limit = traceIterationBound(settings);
+    RayTree tree = rayTreeBegin();
+    int limit = secondaryRays() ? rayTreeIterationBound(settings) : traceIterationBound(settings);
     for (int i = 0; i < limit; ++i) {
-        if (s.phase == PHASE_DONE) {
-            break;
-        }
         Light light = sceneLight(lightIndex(s));
         if (traceNeedsSample(s)) {
             field = map(tracePoint(s, light, settings));
             s.evaluations = s.evaluations + 1;
+            if (secondaryRays() && s.inside) {
+                field = insideSample(field);
+            }
         }
         s = traceAdvance(s, field, light, settings);
+        if (s.phase == PHASE_DONE) {
+            if (!secondaryRays()) {
+                break;
+            }
+            tree = rayTreeFinishRay(tree, s, settings);
+            if (tree.pending == 0) {
+                break;
+            }
+            s = traceBeginNode(rayTreeTop(tree));
+            tree = rayTreePop(tree);
+        }
+    }
+    if (secondaryRays()) {
+        s = rayTreeResult(tree, s);
     }
     s.color = s.color * settings.exposure;
     return s;

@@ -48,14 +48,21 @@ struct TraceState {
     real shadowBudget;  // shadow steps spent, each weighted by how fast the field lets the ray advance
     real shadowLastStep; // the shadow ray's previous step (0 before the first)
     vec3 color;
+    int depth;          // bounces before this ray: 0 for a primary ray (ray_tree.glsl)
+    bool inside;        // the ray travels inside a solid: it marches on the negated field
+    real pathLength;    // distance from the eye to this ray's origin, for the footprint epsilon
 };
 
-SHARED_FN TraceState traceBegin(Ray ray) {
+// A ray of the tree `depth` bounces from the eye, starting pathLength from it.
+SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLength) {
     Material none = noMaterial();
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
-                      real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(0)));
+                      real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(0)), depth,
+                      inside, pathLength);
 }
+
+SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, real(0)); }
 
 // The smallest step out of a surface the eye sits on, as a fraction of the
 // max distance (a rasterizer's near plane at a near/far ratio of 1/1000): at
@@ -74,6 +81,12 @@ const int SHADOW_SAMPLE_CAP = 4096;
 
 SHARED_FN real hitEpsilonAt(TraceSettings settings, real t) {
     return max(settings.epsilon, settings.epsilonPerDistance * t);
+}
+
+// The epsilon at the ray's current point, its footprint measured along the
+// whole path from the eye (a primary ray's pathLength is 0).
+SHARED_FN real rayEpsilon(TraceState s, TraceSettings settings) {
+    return hitEpsilonAt(settings, s.pathLength + s.t);
 }
 
 // Vertices of the tetrahedron (1,-1,-1), (-1,-1,1), (-1,1,-1), (1,1,1).
@@ -156,7 +169,8 @@ SHARED_FN TraceState beginShading(TraceState s, TraceSettings settings) {
     return beginLight(s, settings);
 }
 
-SHARED_FN TraceState finishLight(TraceState s, Light light, TraceSettings settings, real shadow) {
+// `shadow` per channel: a transparent occluder tints the light it lets through.
+SHARED_FN TraceState finishLight(TraceState s, Light light, TraceSettings settings, vec3 shadow) {
     vec3 radiance = reflectedRadiance(s.material, s.normal, -s.rayDirection, light,
                                       settings.lightingModel);
     s.color = s.color + radiance * (shadow * s.ao);
@@ -169,6 +183,13 @@ SHARED_FN TraceState beginOcclusion(TraceState s, TraceSettings settings) {
     s.occlusion = real(0);
     s.occlusionWeight = real(0.5);
     s.ao = real(1);
+    if (s.inside) {
+        // the far side of a solid, seen from within: its lights are outside,
+        // so it has no local illumination, only what its secondary rays bring
+        s.color = vec3(real(0));
+        s.phase = PHASE_DONE;
+        return s;
+    }
     if (settings.aoSamples > 0) {
         s.phase = PHASE_AO;
         return s;
@@ -223,7 +244,7 @@ SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
 // safe step's size, which inside an exact field never leaves the solid, and
 // at least epsilon so the ray crosses its surface.
 SHARED_FN TraceState leaveStep(TraceState s, Sample field, TraceSettings settings) {
-    real epsilon = hitEpsilonAt(settings, s.t);
+    real epsilon = rayEpsilon(s, settings);
     s.steps = s.steps + 1;
     s.t = s.t + max(abs(field.step), max(epsilon, LEAVE_MIN_STEP * settings.maxDistance));
     s.marchRadius = real(0);  // plain steps: no relaxed step to check
@@ -232,16 +253,26 @@ SHARED_FN TraceState leaveStep(TraceState s, Sample field, TraceSettings setting
 }
 
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
-    if (s.steps == 0 && field.d <= hitEpsilonAt(settings, s.t)) {
+    if (s.steps == 0 && s.depth == 0 && field.d < -rayEpsilon(s, settings) && field.material.transparency > real(0) &&
+        settings.maxDepth > 0) {
+        // The eye inside glass (a transparent solid; the ray tree is on, as
+        // it is whenever a material transmits and max_depth > 0) looks out
+        // through it: from the next sample on, the ray marches inside.
+        s.inside = true;
+        s.steps = 1;
+        return s;
+    }
+    if (s.steps == 0 && s.depth == 0 && field.d <= rayEpsilon(s, settings)) {
         // The eye is on a surface or inside a solid (a camera orbiting into
         // the floor, placed on an object): what is behind the eye's own
         // surface is seen, that surface is not. (A hit at t = 0 gave one flat
         // colour; with the pixel epsilon, 0 at t = 0, the ray never moved.)
+        // Secondary rays start off their surface (ray_tree.glsl) and march on.
         s.phase = PHASE_LEAVE;
         return leaveStep(s, field, settings);
     }
     s.steps = s.steps + 1;
-    real epsilon = hitEpsilonAt(settings, s.t);
+    real epsilon = rayEpsilon(s, settings);
     if (relaxedStepOvershot(s, field)) {
         // back to the plain step from the previous point, which its sphere
         // keeps safe, and plain steps from now on (this evaluation is spent)
@@ -281,7 +312,7 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
 
 // Until it is outside (d > epsilon): then it marches on from there.
 SHARED_FN TraceState advanceLeave(TraceState s, Sample field, TraceSettings settings) {
-    if (field.d > hitEpsilonAt(settings, s.t)) {
+    if (field.d > rayEpsilon(s, settings)) {
         s.phase = PHASE_MARCH;
         return advanceMarch(s, field, settings);
     }
@@ -292,7 +323,7 @@ SHARED_FN TraceState advanceLeave(TraceState s, Sample field, TraceSettings sett
 // field's sign: a hit where d < -ENTER_DEPTH epsilon, or, once d > epsilon
 // again, a sliver with nothing inside passed, and the march goes on.
 SHARED_FN TraceState advanceEnter(TraceState s, Sample field, TraceSettings settings) {
-    real epsilon = hitEpsilonAt(settings, s.t);
+    real epsilon = rayEpsilon(s, settings);
     real depth = ENTER_DEPTH * epsilon;
     if (field.d < -depth) {
         return beginNormal(s, field, epsilon);
@@ -371,6 +402,19 @@ SHARED_FN real penumbraEstimate(TraceState s, real h, real k) {
     return estimate;
 }
 
+// What a shadow ray blocked by a surface of material m lets through: k_t M_T,
+// at most 1 per channel (a simplification: the light is not refracted, the
+// occluder is not marched through, what lies behind it is not seen; an opaque
+// occluder lets 0 through, so no transparent one shadows more).
+SHARED_FN vec3 occluderTransmission(Material m) {
+    vec3 through = m.transmissionColor * m.transparency;
+    return vec3(saturate(through.x), saturate(through.y), saturate(through.z));
+}
+SHARED_FN real occluderOpenness(Material m) {
+    vec3 through = occluderTransmission(m);
+    return max(through.x, max(through.y, through.z));
+}
+
 // Shadow rays (thesis, Algorithms 11-13): hard, soft res = min(res, k h / t), and the
 // improved variant that lets the ray penetrate to res = -1 and remaps with smoothstep.
 // The budget counts each sample by the fraction of the distance its step covers,
@@ -394,23 +438,28 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
         s.shadowT = s.shadowT + max(abs(field.step), s.hitEpsilon);
         if (s.shadowResult < real(-1) || s.shadowT > settings.maxDistance || exhausted) {
             real clamped = max(s.shadowResult, real(-1));
-            return finishLight(s, light, settings, smoothstepr(real(-1), real(1), clamped));
+            return finishLight(s, light, settings, vec3(smoothstepr(real(-1), real(1), clamped)));
         }
         return s;
     }
     // out of steps while still closing in on an occluder: blocked, as for
     // primary rays (counting it lit let light leak into grazing shadows)
     if (d < s.hitEpsilon || (exhausted && convergesWithin(s.shadowT, s.lastDistance, field, settings))) {
-        return finishLight(s, light, settings, real(0));
+        return finishLight(s, light, settings, occluderTransmission(field.material));
     }
     if (settings.shadowMode == SHADOW_SOFT && s.shadowT > real(0)) {
-        s.shadowResult = min(s.shadowResult, penumbraEstimate(s, d, light.softness));
+        real estimate = penumbraEstimate(s, d, light.softness);
+        if (field.material.transparency > real(0)) {
+            // the penumbra of a transparent occluder only falls to what it lets through
+            estimate = lerpr(estimate, real(1), occluderOpenness(field.material));
+        }
+        s.shadowResult = min(s.shadowResult, estimate);
     }
     s.shadowLastStep = max(field.step, real(0.25) * s.hitEpsilon);
     s.shadowT = s.shadowT + s.shadowLastStep;
     s.lastDistance = d;
     if (s.shadowT > settings.maxDistance || exhausted) {
-        return finishLight(s, light, settings, saturate(s.shadowResult));
+        return finishLight(s, light, settings, vec3(saturate(s.shadowResult)));
     }
     return s;
 }
@@ -435,7 +484,7 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
         return advanceShadow(s, field, light, settings);
     }
     if (s.phase == PHASE_LIGHT) {
-        return finishLight(s, light, settings, real(1));
+        return finishLight(s, light, settings, vec3(real(1)));
     }
     return s;
 }
