@@ -55,6 +55,7 @@ TEST(RayTreeRender, OpaqueScenesRenderBitIdenticallyThroughTheTree) {
         render::RenderOutcome without = cpu::renderCpu(p), with = cpu::renderCpu(tree);
         EXPECT_EQ(without.frame.color.rgb, with.frame.color.rgb) << file;
         EXPECT_EQ(without.frame.steps, with.frame.steps) << file;
+        EXPECT_EQ(without.frame.evaluations, with.frame.evaluations) << file;
         EXPECT_EQ(without.frame.coverage, with.frame.coverage) << file;
         EXPECT_EQ(without.frame.depth, with.frame.depth) << file;
     }
