@@ -45,6 +45,8 @@ constexpr CommandSpec kCommands[] = {
     {"screenshot", 1, 1, "screenshot <file.png>"},
     {"save", 1, 1, "save <file.json>"},
     {"open", 1, 1, "open <file.json>"},
+    {"autosave", 0, 0, "autosave"},
+    {"restore", 0, 0, "restore"},
     {"quit", 0, 1, "quit [discard]"},
     {"polynomial", 1, 4,
      "polynomial open|close|run|add, polynomial equations <text>, polynomial order <name>, "
@@ -126,8 +128,16 @@ std::vector<ScriptCommand> parseScript(std::string_view text, const std::string&
         auto fail = [&](const std::string& reason) {
             throw std::runtime_error(source + ":" + std::to_string(lineNumber) + ": " + reason);
         };
+        // `fails <command>`: the same command, expected to fail
+        constexpr std::string_view kFails = "fails";
+        bool expectFailure = line.starts_with(kFails) && (line.size() == kFails.size() || line[kFails.size()] == ' ' ||
+                                                          line[kFails.size()] == '\t');
+        if (expectFailure) {
+            line = trim(line.substr(kFails.size()));
+            if (line.empty()) fail("fails needs a command (usage: fails <command> ...)");
+        }
         std::vector<std::string> parts = words(line);
-        ScriptCommand command{lineNumber, parts.front(), {parts.begin() + 1, parts.end()}};
+        ScriptCommand command{lineNumber, parts.front(), {parts.begin() + 1, parts.end()}, expectFailure};
         const CommandSpec* spec = findCommand(command.name);
         if (!spec) {
             std::string list;
@@ -176,6 +186,17 @@ ScriptStatus ScriptRunner::step(Editor& editor, UiState& ui, ScriptHost& host) {
     if (next_ >= commands_.size()) return ScriptStatus::Finished;
     const ScriptCommand& command = commands_[next_];
     ScriptStatus status = run(command, editor, ui, host);
+    if (command.expectFailure && status != ScriptStatus::Running) {
+        if (status != ScriptStatus::Failed) {
+            error_.clear();
+            return fail(command, "succeeded, but the script expects it to fail");
+        }
+        // shown as the user would see it; the script goes on
+        ui.info(error_ + " (expected)");
+        error_.clear();
+        ++next_;
+        status = ScriptStatus::Finished;
+    }
     if (status == ScriptStatus::Failed) return status;
     if (waitingIdle_ && std::chrono::steady_clock::now() - waitStart_ > idleTimeout) {
         return fail(command, "still busy after " + std::to_string(idleTimeout.count()) +
@@ -338,6 +359,10 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
     }
     if (c.name == "save" || c.name == "open") {
         std::string problem = c.name == "save" ? host.save(a[0]) : host.open(a[0]);
+        return problem.empty() ? done() : fail(c, problem);
+    }
+    if (c.name == "autosave" || c.name == "restore") {
+        std::string problem = c.name == "autosave" ? host.autosave() : host.restoreAutosave();
         return problem.empty() ? done() : fail(c, problem);
     }
     if (c.name == "quit") {

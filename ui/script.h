@@ -23,6 +23,7 @@ struct ScriptCommand {
     int line = 0;                    // 1-based line in the script
     std::string name;                // "select", "set", ...
     std::vector<std::string> args;   // whitespace-separated; `set` keeps its value whole
+    bool expectFailure = false;      // written `fails <command>`: the command must fail
 };
 
 // Throws std::runtime_error "<source>:<line>: <reason>" on the first bad line.
@@ -42,6 +43,10 @@ public:
     virtual std::string save(const std::filesystem::path& path) = 0;
     // Opens a scene file in place of the current one; "" or the error.
     virtual std::string open(const std::filesystem::path& path) = 0;
+    // Writes the autosave as the interactive session's timer does; "" or the error.
+    virtual std::string autosave() { return "autosave is not available here"; }
+    // Loads the autosave as the restore offer's Restore button does; "" or the error.
+    virtual std::string restoreAutosave() { return "no autosave can be restored here"; }
     virtual void quit() = 0;
     // The polynomial panel the `polynomial` commands drive.
     virtual PolynomialPanelState& polynomialPanel() = 0;

@@ -81,6 +81,8 @@ struct AppState {
     double lastChange = 0;             // glfwGetTime() when it last changed
     std::optional<ui::ScriptRunner> script;
     bool scripted = false;  // scripts and screenshot runs: no prompts, no autosave
+    std::size_t messagesPrinted = 0;  // of ui.messages, written to stdout in scripted runs
+    std::string viewportErrorLogged;  // the viewport's error last put in the log
     std::optional<std::filesystem::path> screenshot;  // to save at the end of this frame
     bool quit = false;
     int exitCode = 0;

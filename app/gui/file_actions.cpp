@@ -178,13 +178,7 @@ void drawRestorePrompt(AppState& app) {
     ImGui::PopTextWrapPos();
     bool close = false;
     if (ImGui::Button("Restore")) {
-        try {
-            app.editor.reset(scene::loadSceneFile(autosavePath()));
-            app.editor.apply("Restore", [](scene::Scene&) {});  // restored work is unsaved work
-            app.files.current.clear();
-        } catch (const scene::SceneError& error) {
-            app.ui.error(error.what());
-        }
+        restoreAutosave(app);
         close = true;
     }
     ImGui::SameLine();
@@ -213,13 +207,35 @@ void autosaveTick(AppState& app, double now) {
     constexpr double kInterval = 60.0;
     if (app.scripted || now - app.files.lastAutosave < kInterval) return;
     app.files.lastAutosave = now;
-    if (!app.editor.dirty()) return;
+    if (app.editor.dirty()) writeAutosave(app);
+}
+
+std::string writeAutosave(AppState& app) {
     try {
         fs::create_directories(autosavePath().parent_path());
         scene::saveSceneFile(app.editor.scene(), autosavePath());
     } catch (const std::exception& error) {
-        app.ui.error(std::string("autosave failed: ") + error.what());
+        std::string problem = std::string("autosave failed: ") + error.what();
+        app.ui.error(problem);
+        return problem;
     }
+    app.ui.info("autosaved to " + autosavePath().string());
+    return "";
+}
+
+std::string restoreAutosave(AppState& app) {
+    try {
+        app.editor.reset(scene::loadSceneFile(autosavePath()));
+    } catch (const scene::SceneError& error) {
+        std::string problem = error.problems().empty() ? error.what() : error.problems().front();
+        app.ui.error("cannot restore the autosave: " + problem);
+        return problem;
+    }
+    app.editor.apply("Restore", [](scene::Scene&) {});  // restored work is unsaved work
+    app.files.current.clear();
+    app.files.offerRestore = false;
+    app.ui.info("restored unsaved work from " + autosavePath().string());
+    return "";
 }
 
 void removeAutosave() {

@@ -28,6 +28,11 @@ void drawFileDialogs(AppState& app);
 // Autosave: every minute while there are unsaved changes.
 std::filesystem::path autosavePath();
 void autosaveTick(AppState& app, double now);
+// Writes the autosave now (the timer's write); "" or the error (also shown).
+std::string writeAutosave(AppState& app);
+// Replaces the scene by the autosave as unsaved work (the restore offer's
+// Restore button); "" or the error (also shown), the scene then unchanged.
+std::string restoreAutosave(AppState& app);
 // On a clean exit or after a save the recovery file is no longer needed.
 void removeAutosave();
 

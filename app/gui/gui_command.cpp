@@ -63,6 +63,11 @@ public:
     }
     std::string save(const std::filesystem::path& path) override { return saveScene(app_, path); }
     std::string open(const std::filesystem::path& path) override { return openScene(app_, path); }
+    std::string autosave() override { return writeAutosave(app_); }
+    std::string restoreAutosave() override {
+        if (!std::filesystem::exists(autosavePath())) return "no autosave at " + autosavePath().string();
+        return gui::restoreAutosave(app_);
+    }
     void quit() override { app_.quit = true; }
     ui::PolynomialPanelState& polynomialPanel() override { return app_.polynomial; }
     std::pair<int, int> viewSize() const override { return {app_.view.width, app_.view.height}; }
@@ -98,6 +103,25 @@ void setUpStyle(float scale) {
     ImFontConfig font;
     font.SizePixels = 13.0f * scale;
     ImGui::GetIO().Fonts->AddFontDefault(&font);
+}
+
+// A GL failure (a shader refused or that does not build) goes to the log
+// once, besides the viewport's own line.
+void noteViewportError(AppState& app) {
+    const std::string& error = app.viewport->error();
+    if (error == app.viewportErrorLogged) return;
+    app.viewportErrorLogged = error;
+    if (!error.empty()) app.ui.error("GLSL backend: " + error + " (the CPU backend still works)");
+}
+
+// Scripted runs write every message the status bar shows to the standard
+// output, so that whoever runs a script sees what a user would.
+void printNewMessages(AppState& app) {
+    for (; app.messagesPrinted < app.ui.messages.size(); ++app.messagesPrinted) {
+        const ui::Message& message = app.ui.messages[app.messagesPrinted];
+        std::cout << "sdf-workbench gui: " << (message.level == ui::Message::Level::Error ? "error: " : "")
+                  << message.text << std::endl;
+    }
 }
 
 void runFrame(AppState& app, Host& host) {
@@ -140,6 +164,8 @@ void runFrame(AppState& app, Host& host) {
         (outcome.starts_with("wrote") ? app.ui.info(outcome) : app.ui.error(outcome));
     }
     autosaveTick(app, start);
+    noteViewportError(app);
+    if (app.scripted) printNewMessages(app);
     glfwSetWindowTitle(app.window, windowTitle(app).c_str());
     ImGui::Render();
 

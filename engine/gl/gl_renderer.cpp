@@ -3,6 +3,7 @@
 #include <chrono>
 #include <vector>
 
+#include "gl/program_size.h"
 #include "gl/progressive_render.h"
 #include "gl/shader_generator.h"
 #include "glcontext/gl_debug.h"
@@ -48,6 +49,9 @@ const GlRenderer::CachedProgram& GlRenderer::programFor(const program::Program& 
                       " loop iterations, over llvmpipe's limit of " + std::to_string(kLoopLimiter) +
                       "; lower render.max_steps or render.shadow_steps");
     }
+    // every build (the CLI's, the window's worker, thumbnails) refuses a
+    // shader that would compile for minutes before generating it
+    if (std::string problem = shaderSizeProblem(program); !problem.empty()) throw GlError("GL backend: " + problem);
     auto start = std::chrono::steady_clock::now();
     std::string fragment = generateFragmentShader(program);
     ++counters_.generations;

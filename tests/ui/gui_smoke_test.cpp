@@ -9,75 +9,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "image/image_io.h"
 #include "scene/scene_json.h"
+#include "ui/gui_run.h"
 #include "ui/node_path.h"
 
 namespace sdfwb::ui {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool glRequired() {
-    const char* value = std::getenv("SDFWB_REQUIRE_GL");
-    return value && std::string(value) == "1";
-}
-
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-// Where the viewport shows the scene at 1280x800 (left of the 390-pixel side
-// column), below the statistics overlay and above the status bar.
-struct Crop {
-    int x0, y0, x1, y1;
-};
-Crop viewportCrop(const image::Image& shot) {
-    return {shot.width * 5 / 100, shot.height * 30 / 100, shot.width * 65 / 100, shot.height * 90 / 100};
-}
-
-// Mean absolute difference in levels of 255, over the crop.
-double meanDifference(const image::Image& a, const image::Image& b) {
-    Crop c = viewportCrop(a);
-    double sum = 0;
-    size_t count = 0;
-    for (int y = c.y0; y < c.y1; ++y) {
-        for (int x = c.x0; x < c.x1; ++x) {
-            for (size_t ch = 0; ch < 3; ++ch) {
-                size_t i = (static_cast<size_t>(y) * static_cast<size_t>(a.width) + static_cast<size_t>(x)) * 3 + ch;
-                sum += std::abs(a.rgb[i] - b.rgb[i]) * 255.0;
-                ++count;
-            }
-        }
-    }
-    return sum / static_cast<double>(count);
-}
-
-// Standard deviation of the crop's luminance: near zero for a blank image.
-double contrast(const image::Image& shot) {
-    Crop c = viewportCrop(shot);
-    double sum = 0, squares = 0;
-    size_t count = 0;
-    for (int y = c.y0; y < c.y1; ++y) {
-        for (int x = c.x0; x < c.x1; ++x) {
-            size_t i = (static_cast<size_t>(y) * static_cast<size_t>(shot.width) + static_cast<size_t>(x)) * 3;
-            double v = (shot.rgb[i] + shot.rgb[i + 1] + shot.rgb[i + 2]) / 3.0;
-            sum += v;
-            squares += v * v;
-            ++count;
-        }
-    }
-    double mean = sum / static_cast<double>(count);
-    return std::sqrt(std::max(0.0, squares / static_cast<double>(count) - mean * mean));
-}
 
 constexpr const char* kScript = R"(# GUI smoke test: edit, switch backend, undo, save
 # AA 1 keeps the CPU backend's renders short on a shared CI machine
@@ -99,30 +41,14 @@ quit
 )";
 
 // Runs the workbench under Xvfb on `script` in a fresh folder `name` of the
-// test output, with its own XDG folders; returns that folder.
+// test output; returns that folder.
 fs::path runScript(const std::string& name, const char* script) {
-    fs::path dir = fs::path(SDFWB_TEST_OUTPUT_DIR) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir / "config");
-    fs::create_directories(dir / "state");
-    std::ofstream(dir / "script.txt") << script;
-    std::string command = "cd '" + dir.string() + "' && env XDG_CONFIG_HOME='" + (dir / "config").string() +
-                          "' XDG_STATE_HOME='" + (dir / "state").string() + "' xvfb-run -a -s '-screen 0 1280x800x24' '" +
-                          SDFWB_WORKBENCH + "' gui --script script.txt > run.log 2>&1";
-    int status = std::system(command.c_str());
-    EXPECT_EQ(status, 0) << "the workbench failed:\n" << readAll(dir / "run.log");
+    fs::path dir = test::makeGuiFolder(name, script);
+    test::runGuiScript(dir);
     return dir;
 }
 
-class GuiSmokeTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        if (std::system("xvfb-run -a true > /dev/null 2>&1") != 0) {
-            if (glRequired()) GTEST_FAIL() << "no X server could start (xvfb-run -a true failed), and SDFWB_REQUIRE_GL=1";
-            GTEST_SKIP() << "no X server could start (xvfb-run -a true failed)";
-        }
-    }
-};
+using GuiSmokeTest = test::GuiTest;
 
 TEST_F(GuiSmokeTest, ScriptedEditSwitchUndoAndSave) {
     fs::path dir = runScript("gui_smoke", kScript);
@@ -135,11 +61,11 @@ TEST_F(GuiSmokeTest, ScriptedEditSwitchUndoAndSave) {
     ASSERT_EQ(before.width, 1280);
     ASSERT_EQ(before.height, 800);
     for (const image::Image* shot : {&before, &edited, &cpuEdited, &undone}) {
-        EXPECT_GT(contrast(*shot), 0.02) << "a screenshot's viewport is blank";
+        EXPECT_GT(test::contrast(*shot), 0.02) << "a screenshot's viewport is blank";
     }
-    double editChange = meanDifference(before, edited);
-    double backendChange = meanDifference(edited, cpuEdited);
-    double undoChange = meanDifference(before, undone);
+    double editChange = test::meanDifference(before, edited);
+    double backendChange = test::meanDifference(edited, cpuEdited);
+    double undoChange = test::meanDifference(before, undone);
     std::cout << "viewport mean difference (levels): edit " << editChange << ", GL vs CPU " << backendChange
               << ", before vs after undo " << undoChange << "\n";
     EXPECT_GT(editChange, 2.0) << "the edit did not change the viewport";
@@ -172,7 +98,7 @@ quit
 TEST_F(GuiSmokeTest, PolynomialWindowAddsTheImplicitSurface) {
     fs::path dir = runScript("gui_smoke_polynomial", kPolynomialScript);
     ASSERT_FALSE(HasFailure());
-    double change = meanDifference(image::readImage(dir / "before.png"), image::readImage(dir / "added.png"));
+    double change = test::meanDifference(image::readImage(dir / "before.png"), image::readImage(dir / "added.png"));
     std::cout << "viewport mean difference after adding the Whitney umbrella (levels): " << change << "\n";
     EXPECT_GT(change, 1.0) << "the added surface does not show";
     scene::Scene saved = scene::loadSceneFile(dir / "saved.json");
