@@ -9,21 +9,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "expr/tape.h"
-#include "prune/prune_grid.h"
-#include "sdf/shared.h"
+#include "cpu/interpreter.h"
 
 namespace sdfwb::cpu {
-
-namespace f32 {
-using namespace sdfwb::sdf::f32;
-#include "cpu/interpreter.inl"
-}  // namespace f32
-
-namespace f64 {
-using namespace sdfwb::sdf::f64;
-#include "cpu/interpreter.inl"
-}  // namespace f64
 
 namespace {
 

@@ -1,6 +1,6 @@
-// The CPU backend's kernel, included once per precision inside a namespace that
-// has `using namespace sdfwb::sdf::f32` (or f64) in effect, after "expr/tape.h",
-// "prune/prune_grid.h" and "sdf/shared.h". No include guard.
+// The CPU backend's kernel, included once per precision by cpu/interpreter.h
+// inside a namespace that has `using namespace sdfwb::sdf::f32` (or f64) in
+// effect. No include guard.
 
 inline Material materialAtSlot(const vec4* params, int slot) {
     return materialFromSlots(params[slot], params[slot + 1], params[slot + 2], params[slot + 3], params[slot + 4],

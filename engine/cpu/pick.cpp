@@ -4,25 +4,12 @@
 #include <cmath>
 
 #include "cpu/cpu_renderer.h"
+#include "cpu/interpreter.h"
 #include "program/compile_scene.h"
-#include "expr/tape.h"
-#include "prune/prune_grid.h"
 #include "scene/camera_frame.h"
-#include "sdf/shared.h"
 
 namespace sdfwb::cpu {
 namespace {
-
-// The CPU backend's kernel (as cpu_renderer.cpp has it), local to this file.
-namespace f32 {
-using namespace sdfwb::sdf::f32;
-#include "cpu/interpreter.inl"
-}  // namespace f32
-
-namespace f64 {
-using namespace sdfwb::sdf::f64;
-#include "cpu/interpreter.inl"
-}  // namespace f64
 
 using program::Instruction;
 using program::Opcode;

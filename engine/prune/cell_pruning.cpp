@@ -5,7 +5,7 @@
 #include <limits>
 #include <span>
 
-#include "expr/tape.h"
+#include "cpu/interpreter.h"
 #include "prune/prune_grid.h"
 #include "sdf/shared.h"
 
@@ -13,10 +13,7 @@ namespace sdfwb::prune {
 
 // The CPU interpreter in double: the analysis evaluates instructions at a
 // cell's centre with the same shared functions the backends run.
-namespace f64 {
-using namespace sdfwb::sdf::f64;
-#include "cpu/interpreter.inl"
-}  // namespace f64
+namespace f64 = cpu::f64;
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "expr/tape.h"
 #include "cpu/cpu_renderer.h"
+#include "cpu/interpreter.h"
 #include "program/compile_scene.h"
 #include "prune/prune_grid.h"
 #include "scene/scene_json.h"
@@ -17,10 +17,7 @@
 #include "support/scene_files.h"
 
 namespace sdfwb {
-namespace t32 {
-using namespace sdfwb::sdf::f32;
-#include "cpu/interpreter.inl"
-}  // namespace t32
+namespace t32 = cpu::f32;
 
 namespace {
 
