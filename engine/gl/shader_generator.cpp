@@ -14,10 +14,18 @@ using program::opcodeInfo;
 
 namespace {
 
-// Uniforms and helpers between the shared library and map(); names match
-// gl_renderer.cpp. Everything else the tracer reads is in the parameter buffer.
-constexpr std::string_view kInterface = R"(
+// The parameter buffer and its accessors, which map() and the tracer read.
+constexpr std::string_view kParameters = R"(
 uniform samplerBuffer uParams;
+vec4 P(int slot) { return texelFetch(uParams, slot); }
+Material M(int slot) {
+    return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3), P(slot + 4), P(slot + 5));
+}
+)";
+
+// The per-pass uniforms and the outputs; names match gl_renderer.cpp.
+// Everything else the tracer reads is in the parameter buffer.
+constexpr std::string_view kInterface = R"(
 uniform vec2 uResolution;
 uniform ivec2 uSubsample;
 uniform int uAA;
@@ -28,11 +36,6 @@ layout(location = 1) out vec4 outStats;
 // written, instead of rewriting arithmetic (docs/toolchain-notes.md)
 invariant outColor;
 invariant outStats;
-
-vec4 P(int slot) { return texelFetch(uParams, slot); }
-Material M(int slot) {
-    return materialFromSlots(P(slot), P(slot + 1), P(slot + 2), P(slot + 3), P(slot + 4), P(slot + 5));
-}
 )";
 
 constexpr std::string_view kMain = R"(
@@ -104,9 +107,10 @@ void main() {
 )";
 }
 
-std::string generateFragmentShader(const program::Program& program) {
+std::string_view parameterAccessSource() { return kParameters; }
+
+std::string generateMapFunction(const program::Program& program) {
     std::ostringstream out;
-    out << "#version 330 core\n" << sdf::glslPrelude() << sdf::glslLibrary() << kInterface;
     for (size_t i = 0; i < program.formulas.size(); ++i) {
         out << "\n" << expr::emitGlslFunction(program.formulas[i].tape,
                                               {formulaName(static_cast<int>(i)), "vec3 p", {"p.x", "p.y", "p.z"}});
@@ -123,9 +127,16 @@ std::string generateFragmentShader(const program::Program& program) {
         emitInstruction(out, in);
     }
     out << "    return " << sample(program.result) << ";\n}\n";
-    // a constant: scenes without mirrors or glass compile no ray tree
-    out << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n";
-    out << sdf::glslSampleDriver() << kMain;
+    return out.str();
+}
+
+std::string generateFragmentShader(const program::Program& program) {
+    std::ostringstream out;
+    out << "#version 330 core\n"
+        << sdf::glslPrelude() << sdf::glslLibrary() << kInterface << kParameters << generateMapFunction(program)
+        // a constant: scenes without mirrors or glass compile no ray tree
+        << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n"
+        << sdf::glslSampleDriver() << kMain;
     return out.str();
 }
 

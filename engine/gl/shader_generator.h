@@ -13,6 +13,14 @@ namespace sdfwb::gl {
 // The GLSL 3.30 vertex shader drawing one full-screen triangle.
 std::string_view vertexShaderSource();
 
+// The parameter buffer's sampler uParams and its accessors P(slot) and
+// M(slot) (a material's four slots), which map() reads; after the shared library.
+std::string_view parameterAccessSource();
+
+// The program's formulas and its map(vec3 p): straight-line code over its
+// instructions, after the shared library and parameterAccessSource().
+std::string generateMapFunction(const program::Program& program);
+
 // The fragment shader for `program`; depends only on its structure
 // (program.structureKey()), never on parameter values.
 std::string generateFragmentShader(const program::Program& program);

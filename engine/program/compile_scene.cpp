@@ -285,15 +285,8 @@ private:
         return first;
     }
 
-    // The formula's tape: value, or value and gradient (x, y, z are variables 0, 1, 2).
     int addFormula(const std::string& source, bool withGradient) {
-        expr::SpaceFormula formula = withGradient ? expr::compileImplicit(source) : expr::compileSdf(source);
-        std::vector<expr::NodeId> outputs = {formula.value};
-        if (withGradient) {
-            std::array<expr::NodeId, 3> gradient = expr::gradient(formula.graph, formula.value);
-            outputs.insert(outputs.end(), gradient.begin(), gradient.end());
-        }
-        program_.formulas.push_back({source, withGradient, expr::Tape(formula.graph, outputs)});
+        program_.formulas.push_back(compileFormula(source, withGradient));
         return static_cast<int>(program_.formulas.size()) - 1;
     }
 
@@ -473,6 +466,16 @@ void writeSceneBlocks(Program& program, const scene::RenderSettings& r) {
 }
 
 }  // namespace
+
+FormulaCode compileFormula(const std::string& source, bool withGradient) {
+    expr::SpaceFormula formula = withGradient ? expr::compileImplicit(source) : expr::compileSdf(source);
+    std::vector<expr::NodeId> outputs = {formula.value};
+    if (withGradient) {
+        std::array<expr::NodeId, 3> gradient = expr::gradient(formula.graph, formula.value);
+        outputs.insert(outputs.end(), gradient.begin(), gradient.end());
+    }
+    return {source, withGradient, expr::Tape(formula.graph, outputs)};
+}
 
 Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     Compiler compiler(scene);

@@ -34,9 +34,16 @@ SHARED_FN real instSdfFormula(real value) { return value; }
 // step: the bound is only local, overshooting far from the surface and useless
 // where grad F vanishes. q0 = (box centre, max step), q1 = (box half extents,
 // half the sheet thickness).
+// A gradient shorter than this counts as zero: its squares would be denormal,
+// which llvmpipe flushes to zero and the CPU keeps (the backends disagreed
+// there, tests/gl/opcode_conformance_test.cpp). 2^-50.
+const real IMPLICIT_MIN_GRADIENT = real(8.8817842e-16);
 SHARED_FN Sample instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1, Material material) {
     real box = sdBox(p - xyz(q0), xyz(q1));
     real gradientLength = length3(vec3(v.y, v.z, v.w));
+    if (!(gradientLength > IMPLICIT_MIN_GRADIENT)) {
+        gradientLength = real(0);
+    }
     if (q1.w > real(0)) {
         // A sheet of half-thickness h = q1.w around F = 0 (where grad F = 0,
         // off the surface, it takes a step of max_step). A step that
