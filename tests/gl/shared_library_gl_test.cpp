@@ -145,6 +145,13 @@ TEST_F(SharedLibraryOnGl, OwnVectorMathAgreesBitForBit) {
                           return vec4(l.x, l.y, l.z, smoothstepr(-1.0f, 1.0f, a.w));
                       }),
               0);
+    // equal edges are step(edge, x) (the guard rule of docs/shared-glsl-subset.md); any other order is arithmetic
+    EXPECT_EQ(maxUlps("vec4(smoothstepr(a.x, a.x, b.x), smoothstepr(a.y, a.y, a.y), smoothstepr(b.z, a.z, a.w), 0.0)",
+                      [](vec4 a, vec4 b) {
+                          return vec4(smoothstepr(a.x, a.x, b.x), smoothstepr(a.y, a.y, a.y),
+                                      smoothstepr(b.z, a.z, a.w), 0.0f);
+                      }),
+              0);
 }
 
 // Parameters come from b (a buffer) rather than literals, as in generated

@@ -31,8 +31,12 @@ SHARED_FN vec3 lerp3s(vec3 a, vec3 b, real w) { return a + (b - a) * w; }
 
 SHARED_FN real saturate(real x) { return min(max(x, real(0)), real(1)); }
 
-// GLSL's smoothstep is undefined for edge0 >= edge1; callers pass ordered edges.
+// GLSL's smoothstep is undefined for edge0 >= edge1. Equal edges give
+// step(edge0, x), as in formulas (docs/shared-glsl-subset.md, built-in guards).
 SHARED_FN real smoothstepr(real edge0, real edge1, real x) {
+    if (edge0 == edge1) {
+        return x < edge0 ? real(0) : real(1);
+    }
     real t = saturate((x - edge0) / (edge1 - edge0));
     return t * t * (real(3) - real(2) * t);
 }
