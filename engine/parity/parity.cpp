@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "image/image_io.h"
 #include "parity/reference_scene.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
@@ -38,6 +39,8 @@ ParityResult measureParity(const scene::Scene& scene, render::Backend& cpu, rend
     result.cpuNonFinite = cpuStats.nonFinite;
     result.glNonFinite = glStats.nonFinite;
     result.glVsCpu = image::compareImages(glFrame.frame.color, cpuFrame.frame.color);
+    result.cpuColor = cpuFrame.frame.color;
+    result.glColor = glFrame.frame.color;
     result.passes = image::passes(result.glVsCpu, image::kParityThresholds);
 
     if (options.reference) {
@@ -92,6 +95,18 @@ bool hardGate(const ParityResult& r) {
     if (!r.passes) return false;
     if (!agrees(r.cpuAgreement, kHardGateThresholds) || !agrees(r.glAgreement, kHardGateThresholds)) return false;
     return r.glVsReference.meanAbs <= 1.25 * r.cpuVsReference.meanAbs + 1.0;
+}
+
+std::vector<std::filesystem::path> writeFailureImages(const ParityResult& result, const std::filesystem::path& folder,
+                                                      const std::string& name) {
+    std::filesystem::create_directories(folder);
+    std::vector<std::filesystem::path> paths = {folder / (name + "-expected.png"), folder / (name + "-actual.png"),
+                                                folder / (name + "-diff.png")};
+    image::writeImage(paths[0], result.cpuColor);
+    image::writeImage(paths[1], result.glColor);
+    image::writeImage(
+        paths[2], image::differenceHeatImage(result.glColor, result.cpuColor, image::kParityThresholds.hardFailLevel));
+    return paths;
 }
 
 std::string tableHeader(bool withReference) {

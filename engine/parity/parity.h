@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "image/compare.h"
 #include "parity/polynomial_reference.h"
@@ -37,6 +38,8 @@ struct ParityOptions {
 std::optional<scene::Scene> loadIntendedScene(const std::filesystem::path& hardScene);
 
 struct ParityResult {
+    image::Image cpuColor;  // the renders compared, for a failure's images (writeFailureImages)
+    image::Image glColor;
     image::Comparison glVsCpu;
     double cpuSeconds = 0;
     double glSeconds = 0;
@@ -88,6 +91,13 @@ inline constexpr HardGateThresholds kHardGateThresholds{};
 // (or the intended scene's) within kHardGateThresholds; GL mean error against
 // the tightened reference at most 1.25 x the CPU float backend's plus 1/255.
 bool hardGate(const ParityResult& result);
+
+// A failed comparison's evidence in `folder`: NAME-expected.png (the CPU
+// render), NAME-actual.png (the GL render) and NAME-diff.png (their
+// differenceHeatImage, full scale at the hard-fail level). Returns the paths;
+// throws what writing an image throws.
+std::vector<std::filesystem::path> writeFailureImages(const ParityResult& result, const std::filesystem::path& folder,
+                                                      const std::string& name);
 
 // Markdown table header and one row per scene.
 std::string tableHeader(bool withReference);

@@ -10,6 +10,7 @@
 #include "cpu/cpu_backend.h"
 #include "gl/gl_backend.h"
 #include "gl_test_support.h"
+#include "image/image_io.h"
 #include "parity/parity.h"
 #include "scene/scene_json.h"
 #include "support/scene_files.h"
@@ -18,6 +19,16 @@ namespace sdfwb {
 namespace {
 
 class Parity : public test::GlTest, public ::testing::WithParamInterface<test::SceneFile> {};
+
+// On a failure, the expected (CPU), actual (GL) and difference images go to
+// the test-output folder, named after the test, and the paths are printed.
+void keepFailureImages(const parity::ParityResult& r, const std::string& name) {
+    if (!::testing::Test::HasFailure()) return;
+    for (const std::filesystem::path& path :
+         parity::writeFailureImages(r, std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "parity", name)) {
+        std::cout << "wrote " << path.string() << "\n";
+    }
+}
 
 TEST_P(Parity, BackendsAgree) {
     const test::SceneFile& file = GetParam();
@@ -40,6 +51,7 @@ TEST_P(Parity, BackendsAgree) {
         EXPECT_LE(r.glVsCpu.maxAbs, t.hardFailLevel);
         EXPECT_LT(r.glVsCpu.meanAbs, t.maxMeanLevel);
     }
+    keepFailureImages(r, file.testName());
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Parity, ::testing::ValuesIn(test::allSceneFiles()),
@@ -65,6 +77,23 @@ TEST_F(LargeScene, ThousandNodeSceneHasParity) {
     std::cout << parity::tableHeader(false) << parity::tableRow("1000 nodes (generated)", r, false);
     EXPECT_TRUE(r.passes);
     EXPECT_GT(r.glHitRatio, 0.2);
+    keepFailureImages(r, "thousand_nodes");
+}
+
+TEST(ParityFailureImages, ExpectedActualAndDifferenceAreWritten) {
+    parity::ParityResult r;
+    r.cpuColor = image::Image(4, 2);
+    r.glColor = image::Image(4, 2);
+    r.glColor.rgb[3] = 1.0f;  // pixel (1, 0) red in the GL render
+    std::vector<std::filesystem::path> paths =
+        parity::writeFailureImages(r, std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "parity", "synthetic");
+    ASSERT_EQ(paths.size(), 3u);
+    EXPECT_EQ(image::readImage(paths[0]).rgb, r.cpuColor.rgb);
+    EXPECT_EQ(image::readImage(paths[1]).rgb, r.glColor.rgb);
+    image::Image diff = image::readImage(paths[2]);
+    ASSERT_EQ(diff.width, 4);
+    EXPECT_EQ(diff.rgb[0], 0.0f) << "equal pixels are black";
+    EXPECT_EQ(diff.rgb[3], 1.0f) << "a full-scale difference is red";
 }
 
 }  // namespace
