@@ -5,29 +5,16 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 #include "scene/camera_frame.h"
-#include "scene/scene_json.h"
 
 namespace sdfwb::tradeoff {
 namespace {
 
 using scene::Scene;
-
-// The JSON name of each code of an enumerated render setting, read back from
-// the scene writer so the names stay defined once (scene_json.cpp).
-template <typename Enum>
-std::vector<std::string_view> choiceNames(Enum scene::RenderSettings::*member, std::string_view key, int count) {
-    static std::vector<std::string> storage;  // views below point into it
-    std::vector<std::string_view> names;
-    for (int code = 0; code < count; ++code) {
-        Scene probe;
-        probe.render.*member = static_cast<Enum>(code);
-        storage.push_back(scene::sceneToJson(probe)["render"][std::string(key)].template get<std::string>());
-    }
-    for (size_t i = storage.size() - static_cast<size_t>(count); i < storage.size(); ++i) names.push_back(storage[i]);
-    return names;
-}
+using Row = scene::Setting<scene::RenderSettings>;
 
 // Scene units of one sub-sample at the camera's target distance: what a pixel
 // epsilon of 1 means there (docs/scene-format.md, epsilon modes).
@@ -52,67 +39,108 @@ std::vector<double> except(std::vector<double> values, double own) {
 
 std::string always(const Scene&) { return ""; }
 
+// The same threshold at the camera's target distance in the other unit.
+void convertEpsilon(Scene& s, double value) {
+    auto mode = static_cast<scene::EpsilonMode>(static_cast<int>(value));
+    if (mode == s.render.epsilonMode) return;
+    double footprint = subsampleFootprint(s);
+    s.render.epsilon = mode == scene::EpsilonMode::Pixel ? s.render.epsilon / footprint : s.render.epsilon * footprint;
+}
+
+// The knob over the render setting `key`: name, choices, wholeness and access come from its row.
+Knob knob(std::string_view key, std::string (*inert)(const Scene&), std::vector<double> (*defaults)(const Scene&),
+          void (*adjust)(Scene&, double) = nullptr) {
+    for (const Row& row : scene::renderSettings()) {
+        if (row.key != key) continue;
+        if (row.type != scene::SettingType::Integer && row.type != scene::SettingType::Real &&
+            row.type != scene::SettingType::Choice) {
+            throw std::logic_error("knob " + std::string(key) + ": not a numeric or enumerated render setting");
+        }
+        std::vector<std::string_view> choices(row.choices.begin(), row.choices.end());
+        return {&row, row.key, choices, row.type != scene::SettingType::Real, adjust, inert, defaults};
+    }
+    throw std::logic_error("knob " + std::string(key) + ": no such render setting");
+}
+
 std::vector<Knob> makeKnobs() {
     std::vector<Knob> k;
     // Each list starts with its cheapest value: a knob whose cheapest value
     // leaves the image unchanged is not swept further (sweep.cpp).
-    k.push_back({"epsilon", {}, false,
-                 [](const Scene& s) { return s.render.epsilon; },
-                 [](Scene& s, double v) { s.render.epsilon = v; }, always,
-                 [](const Scene& s) { return scaled(s.render.epsilon, {4, 2, 0.5, 0.25}, false); }});
-    k.push_back({"epsilon_mode", choiceNames(&scene::RenderSettings::epsilonMode, "epsilon_mode", 2), true,
-                 [](const Scene& s) { return static_cast<double>(s.render.epsilonMode); },
-                 [](Scene& s, double v) {
-                     auto mode = static_cast<scene::EpsilonMode>(static_cast<int>(v));
-                     if (mode == s.render.epsilonMode) return;
-                     // the same threshold at the camera's target distance
-                     double footprint = subsampleFootprint(s);
-                     s.render.epsilon = mode == scene::EpsilonMode::Pixel ? s.render.epsilon / footprint
-                                                                          : s.render.epsilon * footprint;
-                     s.render.epsilonMode = mode;
-                 },
-                 always,
-                 [](const Scene& s) { return except({0, 1}, static_cast<double>(s.render.epsilonMode)); }});
-    k.push_back({"max_steps", {}, true,
-                 [](const Scene& s) { return static_cast<double>(s.render.maxSteps); },
-                 [](Scene& s, double v) { s.render.maxSteps = static_cast<int>(v); }, always,
-                 [](const Scene& s) { return scaled(s.render.maxSteps, {0.25, 0.5, 2}, true); }});
-    k.push_back({"max_distance", {}, false,
-                 [](const Scene& s) { return s.render.maxDistance; },
-                 [](Scene& s, double v) { s.render.maxDistance = v; }, always,
-                 [](const Scene& s) { return scaled(s.render.maxDistance, {0.25, 0.5, 2}, false); }});
-    k.push_back({"shadows", choiceNames(&scene::RenderSettings::shadows, "shadows", 4), true,
-                 [](const Scene& s) { return static_cast<double>(s.render.shadows); },
-                 [](Scene& s, double v) { s.render.shadows = static_cast<scene::ShadowMode>(static_cast<int>(v)); },
-                 [](const Scene& s) { return s.lights.empty() ? std::string("no lights") : std::string(); },
-                 [](const Scene& s) { return except({0, 1, 2, 3}, static_cast<double>(s.render.shadows)); }});
-    k.push_back({"shadow_steps", {}, true,
-                 [](const Scene& s) { return static_cast<double>(s.render.shadowSteps); },
-                 [](Scene& s, double v) { s.render.shadowSteps = static_cast<int>(v); },
-                 [](const Scene& s) {
-                     if (s.lights.empty()) return std::string("no lights");
-                     return s.render.shadows == scene::ShadowMode::None ? std::string("shadows off") : std::string();
-                 },
-                 [](const Scene& s) { return scaled(s.render.shadowSteps, {0.25, 0.5, 2}, true); }});
+    k.push_back(knob("epsilon", always, [](const Scene& s) {
+        return scaled(s.render.epsilon, {4, 2, 0.5, 0.25}, false);
+    }));
+    k.push_back(knob(
+        "epsilon_mode", always,
+        [](const Scene& s) {
+            return except({0, 1}, static_cast<double>(s.render.epsilonMode));
+        },
+        convertEpsilon));
+    k.push_back(knob("max_steps", always, [](const Scene& s) {
+        return scaled(s.render.maxSteps, {0.25, 0.5, 2}, true);
+    }));
+    k.push_back(knob("max_distance", always, [](const Scene& s) {
+        return scaled(s.render.maxDistance, {0.25, 0.5, 2}, false);
+    }));
+    k.push_back(knob(
+        "shadows", [](const Scene& s) { return s.lights.empty() ? std::string("no lights") : std::string(); },
+        [](const Scene& s) {
+            return except({0, 1, 2, 3}, static_cast<double>(s.render.shadows));
+        }));
+    k.push_back(knob(
+        "shadow_steps",
+        [](const Scene& s) {
+            if (s.lights.empty()) return std::string("no lights");
+            return s.render.shadows == scene::ShadowMode::None ? std::string("shadows off") : std::string();
+        },
+        [](const Scene& s) {
+            return scaled(s.render.shadowSteps, {0.25, 0.5, 2}, true);
+        }));
     // Turning AO on where the scene has it off changes the look, not the
     // quality: only scenes with AO sweep its sample count.
-    k.push_back({"ao_samples", {}, true,
-                 [](const Scene& s) { return static_cast<double>(s.render.aoSamples); },
-                 [](Scene& s, double v) { s.render.aoSamples = static_cast<int>(v); },
-                 [](const Scene& s) { return s.render.aoSamples == 0 ? std::string("AO off") : std::string(); },
-                 [](const Scene& s) { return except({0, 1, 2, 4, 8}, static_cast<double>(s.render.aoSamples)); }});
-    k.push_back({"aa", {}, true,
-                 [](const Scene& s) { return static_cast<double>(s.render.aa); },
-                 [](Scene& s, double v) { s.render.aa = static_cast<int>(v); }, always,
-                 [](const Scene& s) { return except({1, 2, 3}, static_cast<double>(s.render.aa)); }});
-    k.push_back({"step_relaxation", {}, false,
-                 [](const Scene& s) { return s.render.stepRelaxation; },
-                 [](Scene& s, double v) { s.render.stepRelaxation = v; }, always,
-                 [](const Scene& s) { return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation); }});
+    k.push_back(knob(
+        "ao_samples", [](const Scene& s) { return s.render.aoSamples == 0 ? std::string("AO off") : std::string(); },
+        [](const Scene& s) {
+            return except({0, 1, 2, 4, 8}, static_cast<double>(s.render.aoSamples));
+        }));
+    k.push_back(knob("aa", always, [](const Scene& s) { return except({1, 2, 3}, static_cast<double>(s.render.aa)); }));
+    k.push_back(knob("step_relaxation", always, [](const Scene& s) {
+        return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation);
+    }));
     return k;
 }
 
 }  // namespace
+
+double Knob::get(const Scene& scene) const {
+    return std::visit(
+        [&](const auto& member) -> double {
+            using M = std::decay_t<decltype(member)>;
+            if constexpr (std::is_same_v<M, int scene::RenderSettings::*>) return scene.render.*member;
+            if constexpr (std::is_same_v<M, double scene::RenderSettings::*>) return scene.render.*member;
+            if constexpr (std::is_same_v<M, scene::ChoiceMember<scene::RenderSettings>>)
+                return member.get(scene.render);
+            throw std::logic_error("knob " + std::string(name) + ": not numeric");
+        },
+        setting->member);
+}
+
+void Knob::set(Scene& scene, double value) const {
+    if (adjust) adjust(scene, value);
+    std::visit(
+        [&](const auto& member) {
+            using M = std::decay_t<decltype(member)>;
+            if constexpr (std::is_same_v<M, int scene::RenderSettings::*>) {
+                scene.render.*member = static_cast<int>(value);
+            } else if constexpr (std::is_same_v<M, double scene::RenderSettings::*>) {
+                scene.render.*member = value;
+            } else if constexpr (std::is_same_v<M, scene::ChoiceMember<scene::RenderSettings>>) {
+                member.set(scene.render, static_cast<int>(value));
+            } else {
+                throw std::logic_error("knob " + std::string(name) + ": not numeric");
+            }
+        },
+        setting->member);
+}
 
 std::span<const Knob> knobs() {
     static const std::vector<Knob> table = makeKnobs();

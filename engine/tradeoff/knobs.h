@@ -1,8 +1,9 @@
 #pragma once
-// The quality knobs the speed-against-error sweep varies: which render setting
-// each one is, how its values are read and written, and the values swept by
-// default. The list itself lives in knobs.cpp only, so that driving it from the
-// engine's settings table is a change of that one file.
+// The quality knobs the speed-against-error sweep varies. Each one is a row
+// of the render settings table (scene/settings_table.h), which gives its name,
+// its choices, whether it is whole and how it is read and written; knobs.cpp
+// adds only what the sweep needs beyond the row: when the knob does nothing,
+// the values swept by default, and what else changes with it.
 
 #include <optional>
 #include <span>
@@ -11,24 +12,29 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/settings_table.h"
 
 namespace sdfwb::tradeoff {
 
 struct Knob {
-    std::string_view name;                  // as in the scene's JSON render block and on the command line
+    const scene::Setting<scene::RenderSettings>* setting;  // its row
+    std::string_view name;                  // the row's key: in the scene's JSON render block and on the command line
     std::vector<std::string_view> choices;  // names of an enumerated setting's codes (empty: numeric)
     bool integral = false;                  // numeric values are whole numbers
     // (Ranges are the scene format's: a swept scene is validated by the scene reader.)
 
-    // The setting's value in `scene` (an enumerated setting: the index of its choice).
-    double (*get)(const scene::Scene& scene);
-    // Sets the value; may adjust other settings so the image stays comparable
-    // (epsilon_mode converts epsilon between its units).
-    void (*set)(scene::Scene& scene, double value);
+    // Called by set() before the new value is written; may adjust other
+    // settings so the image stays comparable (epsilon_mode converts epsilon
+    // between its units). Null when nothing else changes.
+    void (*adjust)(scene::Scene& scene, double value);
     // Why the knob does nothing for `scene` ("" when it does something).
     std::string (*inert)(const scene::Scene& scene);
     // Values swept when the command line names none, without the scene's own.
     std::vector<double> (*defaults)(const scene::Scene& scene);
+
+    // The setting's value in `scene` (an enumerated setting: the index of its choice).
+    double get(const scene::Scene& scene) const;
+    void set(scene::Scene& scene, double value) const;
 };
 
 std::span<const Knob> knobs();
