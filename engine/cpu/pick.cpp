@@ -7,6 +7,8 @@
 #include "cpu/interpreter.h"
 #include "program/compile_scene.h"
 #include "scene/camera_frame.h"
+#include "scene/visibility.h"
+#include "sdf/shared.h"
 
 namespace sdfwb::cpu {
 namespace {
@@ -21,11 +23,14 @@ bool isPrimitive(const scene::Node& node) {
     return scene::kindSpec(node.kind).category == scene::NodeCategory::Primitive;
 }
 
-void collectPrimitives(const scene::Node& node, std::vector<int>& path, std::vector<std::vector<int>>& out) {
+// The primitives the compiler draws, in its order (hidden ones compile to nothing).
+void collectPrimitives(const scene::Node& node, const scene::Visibility& visibility, std::vector<int>& path,
+                       std::vector<std::vector<int>>& out) {
+    if (!visibility.draws(node)) return;
     if (isPrimitive(node)) out.push_back(path);
     for (size_t i = 0; i < node.children.size(); ++i) {
         path.push_back(static_cast<int>(i));
-        collectPrimitives(node.children[i], path, out);
+        collectPrimitives(node.children[i], visibility, path, out);
         path.pop_back();
     }
 }
@@ -106,7 +111,7 @@ glm::dvec3 gradientAt(const program::Program& program, const glm::dvec3& march) 
 std::vector<std::vector<int>> primitivePaths(const scene::Node& root) {
     std::vector<std::vector<int>> paths;
     std::vector<int> path;
-    collectPrimitives(root, path, paths);
+    collectPrimitives(root, scene::Visibility(root), path, paths);
     return paths;
 }
 

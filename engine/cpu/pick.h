@@ -56,7 +56,7 @@ std::optional<std::vector<int>> primitiveAt(const scene::Scene& scene, const pro
 double fieldDistance(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world);
 glm::dvec3 fieldNormal(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world);
 
-// Paths of the scene's primitives in the compiler's order (depth first).
+// Paths of the scene's drawn primitives in the compiler's order (depth first; hidden ones left out).
 std::vector<std::vector<int>> primitivePaths(const scene::Node& root);
 
 }  // namespace sdfwb::cpu

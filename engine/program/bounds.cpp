@@ -205,6 +205,7 @@ static_assert(scene::inKindOrder(kBoundsRules), "kBoundsRules must list every no
 // Post-order over an explicit stack, so a deep chain of operators needs no deep
 // call stack: a node's rule runs once its children's bounds are on `results`.
 Bounds nodeBounds(const Node& root) {
+    if (root.hidden) return {};  // draws nothing (scene/visibility.h; solo is left out: these bounds may be larger)
     struct Pending {
         const Node* node;
         size_t nextChild;
@@ -215,6 +216,10 @@ Bounds nodeBounds(const Node& root) {
         Pending& top = stack.back();
         if (top.nextChild < top.node->children.size()) {
             const Node* child = &top.node->children[top.nextChild++];
+            if (child->hidden) {
+                results.push_back({});
+                continue;
+            }
             stack.push_back({child, 0});
             continue;
         }

@@ -10,6 +10,7 @@
 #include "expr/formula.h"
 #include "program/rotation.h"
 #include "scene/camera_frame.h"
+#include "scene/visibility.h"
 #include "sdf/shared.h"
 
 namespace sdfwb::program {
@@ -93,7 +94,7 @@ ShapeCode repeatInfiniteCode(const Node& n) { return {Opcode::RepeatInfinite, {d
 
 class Compiler {
 public:
-    explicit Compiler(const scene::Scene& scene) : scene_(scene) {
+    explicit Compiler(const scene::Scene& scene) : scene_(scene), visibility_(scene.root) {
         // the scene-wide blocks come first; compileScene fills them
         program_.params.resize(static_cast<size_t>(shared::MATERIAL_SLOT), dvec4(0.0));
         defaultMaterialSlot_ = addMaterial(scene::defaultMaterial());
@@ -346,13 +347,16 @@ private:
 
     // Booleans fold their children left to right; no children is "nothing".
     int fold(const Node& node, int point, dvec3 offset, Opcode op, int param, int variant) {
-        if (node.children.empty()) {
-            int s = allocSample();
-            emit({Opcode::Empty, s, -1, -1, -1, -1, 0});
-            return s;
-        }
+        if (node.children.empty()) return emptySpace();
         int accumulator = compile(node.children[0], point, offset);
         return foldRest(node, point, offset, op, accumulator, param, variant);
+    }
+
+    // "Nothing": an empty boolean, a hidden node.
+    int emptySpace() {
+        int s = allocSample();
+        emit({Opcode::Empty, s, -1, -1, -1, -1, 0});
+        return s;
     }
 
     int foldRest(const Node& node, int point, dvec3 offset, Opcode op, int accumulator, int param, int variant) {
@@ -371,6 +375,7 @@ private:
     }
 
     const scene::Scene& scene_;
+    scene::Visibility visibility_;
     Program program_;
     std::map<std::string, int> materialSlots_;
     int defaultMaterialSlot_ = 0;
@@ -420,6 +425,7 @@ constexpr std::array<CompileRule, scene::kNodeKindCount> kCompileRules = {{
 static_assert(scene::inKindOrder(kCompileRules), "kCompileRules must list every node kind in NodeKind order");
 
 int Compiler::compile(const Node& node, int point, dvec3 offset) {
+    if (!visibility_.draws(node)) return emptySpace();
     return (this->*kCompileRules[static_cast<size_t>(node.kind)].compile)(node, point, offset);
 }
 

@@ -24,6 +24,10 @@ struct Node {
     std::string name;
     std::vector<FieldValue> fields;  // one per kindSpec(kind).fields, in that order
     std::vector<Node> children;
+    // Hide and solo (scene/visibility.h): a hidden node draws nothing; while
+    // any node is soloed only soloed subtrees draw. Saved, and undoable.
+    bool hidden = false;
+    bool solo = false;
 
     bool operator==(const Node&) const = default;
 

@@ -116,6 +116,14 @@ public:
         out = v;
     }
 
+    void flag(const json& value, const std::string& path, bool& out) {
+        if (!value.is_boolean()) {
+            fail(path, "must be true or false");
+            return;
+        }
+        out = value.get<bool>();
+    }
+
     void string(const json& value, const std::string& path, std::string& out) {
         if (!value.is_string()) {
             fail(path, "must be a string");
@@ -243,13 +251,7 @@ void readSetting(Reader& reader, const Setting<Owner>& row, const json& value, c
         owner.*std::get<dvec3 Owner::*>(row.member) = d;
         return;
     }
-    case SettingType::Flag:
-        if (!value.is_boolean()) {
-            reader.fail(path, "must be true or false");
-            return;
-        }
-        owner.*std::get<bool Owner::*>(row.member) = value.get<bool>();
-        return;
+    case SettingType::Flag: reader.flag(value, path, owner.*std::get<bool Owner::*>(row.member)); return;
     case SettingType::Text: reader.string(value, path, owner.*std::get<std::string Owner::*>(row.member)); return;
     }
 }
@@ -351,6 +353,8 @@ Node readNode(Reader& reader, const json& value, const std::string& path, int de
     ObjectReader object(reader, value, path);
     object.member("kind", [](const json&, const std::string&) {});
     object.member("name", [&](const json& v, const std::string& p) { reader.string(v, p, node.name); });
+    object.member("hidden", [&](const json& v, const std::string& p) { reader.flag(v, p, node.hidden); });
+    object.member("solo", [&](const json& v, const std::string& p) { reader.flag(v, p, node.solo); });
     for (size_t i = 0; i < spec->fields.size(); ++i) {
         const FieldSpec& field = spec->fields[i];
         object.member(field.name, [&](const json& v, const std::string& p) {
@@ -570,6 +574,8 @@ json nodeToJson(const Node& node) {
     if (!node.name.empty()) {
         out["name"] = node.name;
     }
+    if (node.hidden) out["hidden"] = true;
+    if (node.solo) out["solo"] = true;
     for (size_t i = 0; i < spec.fields.size(); ++i) {
         const FieldValue& value = node.fields[i];
         if (const double* d = std::get_if<double>(&value)) {
