@@ -39,6 +39,10 @@ int runDefaultJob() {
 int main(int argc, char** argv) {
     CLI::App app{"SDF Workbench: model and render surfaces defined by signed distance functions"};
     app.require_subcommand(0, 1);
+    app.footer(
+        "Without a command: the workbench window on the built-in default scene when a display is available,\n"
+        "otherwise a snapshot of it written to ./sdf-workbench-default.png.\n"
+        "'sdf-workbench COMMAND --help' describes one command; docs/ in the source tree describes the rest.");
     sdfwb::app::RenderArguments renderArguments;
     CLI::App* render = sdfwb::app::addRenderCommand(app, renderArguments);
     sdfwb::app::CompareArguments compareArguments;

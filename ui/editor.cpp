@@ -1,7 +1,5 @@
 #include "ui/editor.h"
 
-#include <charconv>
-
 #include "scene/scene_json.h"
 
 namespace sdfwb::ui {
@@ -94,6 +92,20 @@ Problems Editor::rename(const NodePath& path, std::string name) {
     scene::Scene candidate = scene_;
     findNode(candidate.root, path)->name = std::move(name);
     return commit("Rename", std::move(candidate), selection_, {});
+}
+
+Problems Editor::setHidden(const NodePath& path, bool hidden) {
+    if (!findNode(scene_.root, path)) return noNode(path);
+    scene::Scene candidate = scene_;
+    findNode(candidate.root, path)->hidden = hidden;
+    return commit(hidden ? "Hide" : "Show", std::move(candidate), selection_, {});
+}
+
+Problems Editor::setSolo(const NodePath& path, bool solo) {
+    if (!findNode(scene_.root, path)) return noNode(path);
+    scene::Scene candidate = scene_;
+    findNode(candidate.root, path)->solo = solo;
+    return commit(solo ? "Solo" : "End solo", std::move(candidate), selection_, {});
 }
 
 Problems Editor::insert(const NodePath& parent, int index, Node node, std::string_view label) {
@@ -246,41 +258,6 @@ Problems Editor::remove(const NodePath& path) {
     if (wrappers > 0) label += " and " + std::to_string(wrappers) + (wrappers == 1 ? " wrapper" : " wrappers");
     return commit(label, std::move(candidate), parent, {});
 }
-
-namespace {
-
-// Splits "lights[0].softness" into keys and indices; false on bad syntax.
-struct JsonStep {
-    std::string key;  // empty for an index step
-    int index = -1;
-};
-
-bool splitJsonPath(std::string_view text, std::vector<JsonStep>& steps) {
-    while (!text.empty()) {
-        if (text.front() == '[') {
-            size_t close = text.find(']');
-            if (close == std::string_view::npos) return false;
-            int index = -1;
-            auto [end, error] = std::from_chars(text.data() + 1, text.data() + close, index);
-            if (error != std::errc() || end != text.data() + close || index < 0) return false;
-            steps.push_back({"", index});
-            text.remove_prefix(close + 1);
-        } else {
-            if (text.front() == '.') {
-                if (steps.empty()) return false;
-                text.remove_prefix(1);
-            }
-            size_t end = text.find_first_of(".[");
-            std::string_view key = text.substr(0, end);
-            if (key.empty()) return false;
-            steps.push_back({std::string(key), -1});
-            text.remove_prefix(key.size());
-        }
-    }
-    return !steps.empty();
-}
-
-}  // namespace
 
 Problems Editor::setJsonValue(std::string_view jsonPath, const json& value, std::string_view mergeKey) {
     std::vector<JsonStep> steps;

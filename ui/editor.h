@@ -60,6 +60,9 @@ public:
     Problems setField(const NodePath& path, std::string_view field, scene::FieldValue value,
                       std::string_view mergeKey = {});
     Problems rename(const NodePath& path, std::string name);
+    // Hide and solo (scene/visibility.h): saved with the scene, undoable.
+    Problems setHidden(const NodePath& path, bool hidden);
+    Problems setSolo(const NodePath& path, bool solo);
     // Inserts `node` as child `index` of `parent` (-1: last) and selects it;
     // the undo step is `label`, or "Add <kind>" when empty.
     Problems insert(const NodePath& parent, int index, scene::Node node, std::string_view label = {});

@@ -88,7 +88,7 @@ void fieldWidget(Editor& editor, UiState& ui, const NodePath& path, const FieldS
         DragRange r = dragRangeFor(field);
         const char* format = field.range == Range::Integer2or3 || field.range == Range::NonNegativeInteger ? "%.0f" : "%.3f";
         WidgetEdit edit = dragReal(label.c_str(), v, r.speed, r.minimum, r.maximum, format);
-        commitEdit(editor, ui, edit, "Edit field", setter(v));
+        commitEdit(editor, ui, edit, "Edit field", setter(v), formatNodePath(path) + "." + std::string(field.name));
         break;
     }
     case FieldType::Vec3: {
@@ -96,7 +96,7 @@ void fieldWidget(Editor& editor, UiState& ui, const NodePath& path, const FieldS
         DragRange r = dragRangeFor(field);
         const char* format = field.range == Range::NonNegativeInteger ? "%.0f" : "%.3f";
         WidgetEdit edit = dragVec3(label.c_str(), v, r.speed, r.minimum, r.maximum, format);
-        commitEdit(editor, ui, edit, "Edit field", setter(v));
+        commitEdit(editor, ui, edit, "Edit field", setter(v), formatNodePath(path) + "." + std::string(field.name));
         break;
     }
     case FieldType::Choice: {

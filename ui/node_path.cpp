@@ -35,6 +35,32 @@ std::optional<NodePath> parseNodePath(std::string_view text) {
     return path;
 }
 
+bool splitJsonPath(std::string_view text, std::vector<JsonStep>& steps) {
+    while (!text.empty()) {
+        if (text.front() == '[') {
+            size_t close = text.find(']');
+            if (close == std::string_view::npos) return false;
+            int index = -1;
+            auto [end, error] = std::from_chars(text.data() + 1, text.data() + close, index);
+            if (error != std::errc() || end != text.data() + close || index < 0) return false;
+            steps.push_back({"", index});
+            text.remove_prefix(close + 1);
+        } else {
+            if (text.front() == '.') {
+                if (steps.empty()) return false;
+                text.remove_prefix(1);
+            }
+            size_t end = text.find_first_of(".[");
+            std::string_view key = text.substr(0, end);
+            if (key.empty()) return false;
+            steps.push_back({std::string(key), -1});
+            text.remove_prefix(key.size());
+        }
+    }
+    return !steps.empty();
+}
+
+
 namespace {
 template <typename NodeT>
 NodeT* walk(NodeT& root, const NodePath& path) {

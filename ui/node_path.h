@@ -20,6 +20,14 @@ std::string formatNodePath(const NodePath& path);
 // The path, or nullopt when `text` is not of the form root(.children[N])*.
 std::optional<NodePath> parseNodePath(std::string_view text);
 
+// The steps of any JSON path of the scene file: "lights[0].softness" is the
+// key lights, the index 0, the key softness. False on bad syntax.
+struct JsonStep {
+    std::string key;  // empty for an index step
+    int index = -1;
+};
+bool splitJsonPath(std::string_view text, std::vector<JsonStep>& steps);
+
 // nullptr when the path leads nowhere in `root`.
 const scene::Node* findNode(const scene::Node& root, const NodePath& path);
 scene::Node* findNode(scene::Node& root, const NodePath& path);

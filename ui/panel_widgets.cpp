@@ -1,8 +1,16 @@
 #include "ui/panel_widgets.h"
 
-#include <imgui.h>
-#include <imgui_internal.h>  // GetItemID: the merge key of a drag
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <vector>
 
+#include <imgui.h>
+#include <imgui_internal.h>  // GetItemID: the merge key of a drag; the typed text of a drag field
+
+#include "image/encoding.h"
+#include "io/quoted_text.h"
 #include "ui/long_text.h"
 #include "ui/panels.h"
 
@@ -12,31 +20,102 @@ namespace {
 WidgetEdit finishEdit(bool changed) {
     return {changed, ImGui::IsItemDeactivatedAfterEdit()};
 }
+
+// Whether a drag field's typed text is a finite number, as ImGui reads it
+// (leading and trailing blanks allowed).
+bool finiteNumber(const char* text) {
+    char* end = nullptr;
+    double v = std::strtod(text, &end);
+    if (end == text) return false;
+    while (*end == ' ' || *end == '\t') ++end;
+    return *end == '\0' && std::isfinite(v);
+}
+
+// The typed text of the drag field `id` when it is being typed into.
+std::optional<std::string> typedText(ImGuiID id) {
+    if (!ImGui::TempInputIsActive(id)) return std::nullopt;
+    ImGuiInputTextState* state = ImGui::GetInputTextState(id);
+    if (!state || state->TextA.Size == 0) return std::string();
+    return std::string(state->TextA.Data);
+}
+
+// Finishes a drag widget edit: a value made non-finite by typed text ("nan",
+// "1e999") is put back, and text that is not a finite number, once entered,
+// is reported in `edit.notANumber` (ImGui itself would keep the old value
+// without a word).
+WidgetEdit checkedEdit(bool changed, const std::vector<std::optional<std::string>>& typed, double* values,
+                       const double* before) {
+    WidgetEdit edit = finishEdit(changed);
+    for (size_t i = 0; i < typed.size(); ++i) {
+        if (!std::isfinite(values[i])) {
+            values[i] = before[i];
+            edit.changed = false;
+        }
+        if (typed[i] && ImGui::IsItemDeactivated() && !finiteNumber(typed[i]->c_str())) {
+            edit.notANumber = *typed[i];
+            edit.finished = true;
+        }
+    }
+    return edit;
+}
 }  // namespace
 
 WidgetEdit dragReal(const char* label, double& value, double speed, double minimum, double maximum,
                     const char* format) {
+    double before = value;
+    std::vector<std::optional<std::string>> typed{typedText(ImGui::GetID(label))};
     bool changed = ImGui::DragScalar(label, ImGuiDataType_Double, &value, static_cast<float>(speed),
                                      &minimum, &maximum, format);
-    return finishEdit(changed);
+    return checkedEdit(changed, typed, &value, &before);
 }
 
 WidgetEdit dragVec3(const char* label, glm::dvec3& value, double speed, double minimum, double maximum,
                     const char* format) {
+    glm::dvec3 before = value;
+    // DragScalarN's components are DragScalar("") under the ids label, then 0, 1, 2
+    std::vector<std::optional<std::string>> typed;
+    ImGui::PushID(label);
+    for (int i = 0; i < 3; ++i) {
+        ImGui::PushID(i);
+        typed.push_back(typedText(ImGui::GetID("")));
+        ImGui::PopID();
+    }
+    ImGui::PopID();
     bool changed = ImGui::DragScalarN(label, ImGuiDataType_Double, &value.x, 3, static_cast<float>(speed),
                                       &minimum, &maximum, format);
-    return finishEdit(changed);
+    return checkedEdit(changed, typed, &value.x, &before.x);
 }
 
+// The numbers are the scene's linear values; the swatch and its picker show
+// them sRGB-encoded, as the render shows the colour (ImGui would show the
+// linear numbers as if they were sRGB, too dark).
 WidgetEdit colorEdit(const char* label, glm::dvec3& value) {
-    float c[3] = {static_cast<float>(value.x), static_cast<float>(value.y), static_cast<float>(value.z)};
-    bool changed = ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-    if (changed) value = glm::dvec3(c[0], c[1], c[2]);
-    return finishEdit(changed);
+    float shown[3];
+    for (int i = 0; i < 3; ++i) shown[i] = image::srgbFromLinear(static_cast<float>(value[i]));
+    const float swatch = ImGui::GetFrameHeight(), gap = ImGui::GetStyle().ItemInnerSpacing.x;
+    const float width = ImGui::CalcItemWidth();
+    ImGui::PushID(label);
+    bool picked = ImGui::ColorEdit3("##swatch", shown, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoLabel);
+    ImGui::PopID();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Click to pick; the numbers are linear, as the scene file holds them");
+    WidgetEdit edit = finishEdit(picked);
+    if (picked) {
+        for (int i = 0; i < 3; ++i) value[i] = image::linearFromSrgb(shown[i]);
+    }
+    ImGui::SameLine(0, gap);
+    ImGui::SetNextItemWidth(std::max(1.0f, width - swatch - gap));
+    WidgetEdit typed = dragVec3(label, value, 0.005, 0.0, 1e6);
+    return {edit.changed || typed.changed, edit.finished || typed.finished, typed.notANumber};
 }
 
 void commitEdit(Editor& editor, UiState& ui, const WidgetEdit& edit, const char* label,
-                const std::function<void(scene::Scene&)>& change) {
+                const std::function<void(scene::Scene&)>& change, std::string_view jsonPath) {
+    if (!edit.notANumber.empty()) {
+        std::string problem = (jsonPath.empty() ? std::string(label) : std::string(jsonPath)) + ": " +
+                              io::quoted(shortened(edit.notANumber, 40)) + " is not a number (type a finite value such as 0.5)";
+        ui.inspectorProblems = {problem};
+        ui.error(problem);
+    }
     if (edit.changed) {
         std::string key = std::to_string(ImGui::GetItemID());
         Problems problems = editor.apply(label, change, key);

@@ -16,6 +16,10 @@ namespace sdfwb::ui {
 struct WidgetEdit {
     bool changed = false;
     bool finished = false;
+    // Text typed into a number field (Ctrl+click or double-click) that is not
+    // a finite number ("abc", "nan", "inf"): the value is left as it was and
+    // commitEdit reports it.
+    std::string notANumber{};
 };
 // Drag widgets that edit `value` in place.
 WidgetEdit dragReal(const char* label, double& value, double speed, double minimum, double maximum,
@@ -29,9 +33,10 @@ WidgetEdit colorEdit(const char* label, glm::dvec3& value);
 void problemText(const std::string& problem);
 
 // Commits a scene change made by a widget: merges while the widget stays
-// active (key = the widget's id), reports refused edits, ends the merge when
-// the widget is released.
+// active (key = the widget's id), reports refused edits and text that is not
+// a number (under `jsonPath`, the value's path in the scene file, so the
+// Problems window can go there), ends the merge when the widget is released.
 void commitEdit(Editor& editor, UiState& ui, const WidgetEdit& edit, const char* label,
-                const std::function<void(scene::Scene&)>& change);
+                const std::function<void(scene::Scene&)>& change, std::string_view jsonPath = {});
 
 }  // namespace sdfwb::ui

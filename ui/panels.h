@@ -39,6 +39,9 @@ void drawLibraryPanel(Editor& editor, UiState& ui, PrimitiveLibrary& library);
 void drawAddMenuItems(Editor& editor, UiState& ui);
 void drawWrapMenuItems(Editor& editor, UiState& ui);
 
+// The Problems window (ui/problems.h) while ui.showProblems is set.
+void drawProblemsWindow(Editor& editor, UiState& ui);
+
 // Shows problems of a refused edit as UI messages (nothing when empty).
 void reportProblems(UiState& ui, const Problems& problems);
 

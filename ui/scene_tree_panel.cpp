@@ -92,8 +92,37 @@ void contextMenu(TreeContext& tree, const NodePath& path) {
     ImGui::EndPopup();
 }
 
+// A toggle at the row's right end, lit when on.
+bool rowToggle(const char* label, bool on, const char* tip) {
+    ImGui::PushStyleColor(ImGuiCol_Button, on ? IM_COL32(200, 140, 40, 255) : IM_COL32(60, 64, 72, 160));
+    bool pressed = ImGui::SmallButton(label);
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    return pressed;
+}
+
+// Hide (H) and solo (S) of the row's node at the right end of the row. Drawn
+// before the row, so they take the mouse before the row does; the cursor goes
+// back to the row's start.
+void visibilityToggles(TreeContext& tree, const scene::Node& node, const NodePath& path) {
+    ImVec2 row = ImGui::GetCursorScreenPos();
+    float right = row.x + ImGui::GetContentRegionAvail().x;
+    float width = ImGui::CalcTextSize("H").x + 2 * ImGui::GetStyle().FramePadding.x;
+    float rowHeight = tree.thumbnails ? kThumbnailSize : ImGui::GetFrameHeight();
+    ImGui::SetCursorScreenPos(ImVec2(right - 2 * width - 4, row.y + 0.5f * (rowHeight - ImGui::GetTextLineHeight())));
+    if (rowToggle("H", node.hidden, node.hidden ? "Hidden: draws nothing (click to show)" : "Hide: draw nothing, as if deleted, until shown again")) {
+        tree.pending = [&tree, path, hidden = !node.hidden] { reportProblems(tree.ui, tree.editor.setHidden(path, hidden)); };
+    }
+    ImGui::SameLine(0, 2);
+    if (rowToggle("S", node.solo, node.solo ? "Solo: only soloed nodes draw (click to end)" : "Solo: draw only this node (and other soloed ones)")) {
+        tree.pending = [&tree, path, solo = !node.solo] { reportProblems(tree.ui, tree.editor.setSolo(path, solo)); };
+    }
+    ImGui::SetCursorScreenPos(row);
+}
+
 void drawNode(TreeContext& tree, const scene::Node& node, NodePath& path) {
     ImGui::PushID(static_cast<int>(path.empty() ? -1 : path.back()));
+    visibilityToggles(tree, node, path);
     if (tree.thumbnails) {
         ImTextureID texture = tree.thumbnails(path, node);
         if (texture) {
@@ -104,13 +133,16 @@ void drawNode(TreeContext& tree, const scene::Node& node, NodePath& path) {
         ImGui::SameLine();
     }
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen |
-                               ImGuiTreeNodeFlags_SpanAvailWidth | ImGuiTreeNodeFlags_FramePadding;
+                               ImGuiTreeNodeFlags_SpanAvailWidth | ImGuiTreeNodeFlags_FramePadding |
+                               ImGuiTreeNodeFlags_AllowItemOverlap;
     if (node.children.empty()) flags |= ImGuiTreeNodeFlags_Leaf;
     if (tree.editor.selection() == path) flags |= ImGuiTreeNodeFlags_Selected;
     if (tree.thumbnails) {
         ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, (kThumbnailSize - ImGui::GetTextLineHeight()) / 2));
     }
+    if (node.hidden) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     bool open = ImGui::TreeNodeEx("node", flags, "%s", rowLabel(node).c_str());
+    if (node.hidden) ImGui::PopStyleColor();
     if (tree.thumbnails) ImGui::PopStyleVar();
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) {
         tree.editor.select(path);

@@ -8,6 +8,7 @@
 
 #include "scene/node_kinds.h"
 #include "ui/placement.h"
+#include "ui/transform_handles.h"
 #include "ui/view_camera.h"
 #include "ui/view_picking.h"
 
@@ -40,6 +41,10 @@ constexpr CommandSpec kCommands[] = {
     {"camera", 3, 3, "camera <azimuth> <elevation> <distance>"},
     {"orbit", 2, 2, "orbit <azimuth step> <elevation step>"},
     {"pick", 2, 2, "pick <x> <y>"},
+    {"hide", 1, 1, "hide on|off"},
+    {"solo", 1, 1, "solo on|off"},
+    {"handles", 1, 1, "handles move|rotate|scale"},
+    {"drag", 2, 3, "drag x|y|z <pixels> [snap]"},
     {"view", 1, 1, "view front|back|right|left|top|bottom|all|selected"},
     {"wait", 1, 1, "wait <frames>|idle"},
     {"screenshot", 1, 1, "screenshot <file.png>"},
@@ -318,6 +323,41 @@ ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& 
         selectPicked(editor, pickView(editor.scene(), width, height, v[0] * width, v[1] * height));
         ui.showTab = InspectorTab::Node;
         return done();
+    }
+    if (c.name == "hide" || c.name == "solo") {
+        if (a[0] != "on" && a[0] != "off") return fail(c, "must be on or off (got " + a[0] + ")");
+        if (!editor.selection()) return fail(c, "nothing is selected");
+        const NodePath& path = *editor.selection();
+        return done(c.name == "hide" ? editor.setHidden(path, a[0] == "on") : editor.setSolo(path, a[0] == "on"));
+    }
+    if (c.name == "handles") {
+        std::optional<HandleMode> mode = handleModeNamed(a[0]);
+        if (!mode) return fail(c, "must be move, rotate or scale (got " + a[0] + ")");
+        ui.handles = *mode;
+        return done();
+    }
+    if (c.name == "drag") {
+        double pixels = 0;
+        int axis = a[0] == "x" ? 0 : a[0] == "y" ? 1 : a[0] == "z" ? 2 : -1;
+        if (axis < 0) return fail(c, "the axis must be x, y or z (got " + a[0] + ")");
+        if (!parseNumber(a[1], pixels) || std::abs(pixels) > 1e4) return fail(c, "\"" + a[1] + "\" is not a number of pixels up to 10000");
+        if (a.size() == 3 && a[2] != "snap") return fail(c, "the third word can only be snap (got " + a[2] + ")");
+        if (!editor.selection()) return fail(c, "nothing is selected");
+        auto [width, height] = host.viewSize();
+        if (width <= 0 || height <= 0) std::tie(width, height) = std::pair{editor.scene().render.width, editor.scene().render.height};
+        std::optional<HandleLayout> layout = handleLayout(editor.scene(), *editor.selection(), ui.handles, width, height);
+        std::optional<HandleGrip> grip = layout ? handleGrip(*layout, ui.handles, axis) : std::nullopt;
+        if (!grip) return fail(c, "the " + a[0] + " handle is not in view");
+        // pressed, moved in steps as a hand does, released: one undo step
+        HandleDrag drag;
+        if (!drag.begin(editor, ui.handles, width, height, grip->point)) return fail(c, "the " + a[0] + " handle is covered by another");
+        constexpr int kSteps = 8;
+        Problems problems;
+        for (int i = 1; i <= kSteps && problems.empty(); ++i) {
+            problems = drag.update(editor, grip->point + (pixels * i / kSteps) * grip->direction, a.size() == 3);
+        }
+        drag.end(editor);
+        return done(problems);
     }
     if (c.name == "orbit") {
         double v[2];

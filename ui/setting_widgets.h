@@ -3,6 +3,8 @@
 // its label, range and drag hints come from the row, so a new setting needs no
 // widget code of its own.
 
+#include <cstdio>
+#include <string>
 #include <type_traits>
 
 #include <imgui.h>
@@ -12,9 +14,9 @@
 
 namespace sdfwb::ui {
 
-// `speed` overrides the row's drag speed when > 0.
+// The widget alone (settingWidget adds the tooltip).
 template <typename Owner>
-WidgetEdit settingWidget(const scene::Setting<Owner>& row, Owner& owner, double speed = 0) {
+WidgetEdit settingWidgetOnly(const scene::Setting<Owner>& row, Owner& owner, double speed) {
     using scene::SettingType;
     std::string label(row.label);
     double drag = speed > 0 ? speed : row.widget.speed;
@@ -46,6 +48,53 @@ WidgetEdit settingWidget(const scene::Setting<Owner>& row, Owner& owner, double 
     case SettingType::Text: break;  // names and references have their own widgets
     }
     return {};
+}
+
+// What the row says about its value, for the widget's tooltip: the JSON key,
+// unit and allowed values.
+template <typename Owner>
+std::string settingHint(const scene::Setting<Owner>& row) {
+    using scene::RealRange;
+    using scene::SettingType;
+    auto number = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", v);
+        return std::string(text);
+    };
+    std::string hint = "JSON key " + std::string(row.key);
+    if (!row.unit.empty()) hint += ", in " + std::string(row.unit);
+    std::string allowed;
+    switch (row.type) {
+    case SettingType::Integer: allowed = "whole numbers from " + number(row.minimum) + " to " + number(row.maximum); break;
+    case SettingType::Real:
+        switch (row.range) {
+        case RealRange::Any: allowed = "any finite number"; break;
+        case RealRange::Positive: allowed = "> 0"; break;
+        case RealRange::NonNegative: allowed = ">= 0"; break;
+        case RealRange::Closed: allowed = "from " + number(row.minimum) + " to " + number(row.maximum); break;
+        case RealRange::Open: allowed = "between " + number(row.minimum) + " and " + number(row.maximum) + ", ends excluded"; break;
+        }
+        break;
+    case SettingType::Choice:
+        for (const char* choice : row.choices) allowed += (allowed.empty() ? "" : ", ") + std::string(choice);
+        break;
+    case SettingType::Colour: allowed = "linear RGB, each >= 0 (above 1 is brighter than white)"; break;
+    case SettingType::Direction: allowed = "any vector but zero (normalised when rendered)"; break;
+    case SettingType::Vector:
+    case SettingType::Flag:
+    case SettingType::Text: break;
+    }
+    if (!allowed.empty()) hint += "\nallowed: " + allowed;
+    if (row.type == SettingType::Integer || row.type == SettingType::Real) hint += "\nCtrl+click or double-click to type a value";
+    return hint;
+}
+
+// `speed` overrides the row's drag speed when > 0.
+template <typename Owner>
+WidgetEdit settingWidget(const scene::Setting<Owner>& row, Owner& owner, double speed = 0) {
+    WidgetEdit edit = settingWidgetOnly(row, owner, speed);
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) ImGui::SetTooltip("%s", settingHint(row).c_str());
+    return edit;
 }
 
 }  // namespace sdfwb::ui

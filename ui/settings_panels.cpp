@@ -12,39 +12,44 @@ namespace sdfwb::ui {
 
 void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
     scene::RenderSettings r = editor.scene().render;
-    auto set = [&](WidgetEdit edit) {
-        commitEdit(editor, ui, edit, "Edit render settings", [&r](scene::Scene& s) { s.render = r; });
+    auto set = [&](WidgetEdit edit, std::string_view key) {
+        commitEdit(editor, ui, edit, "Edit render settings", [&r](scene::Scene& s) { s.render = r; },
+                   "render." + std::string(key));
     };
     ImGui::PushItemWidth(-130);
     for (const scene::Setting<scene::RenderSettings>& row : scene::renderSettings()) {
         if (row.key == "step_relaxation") continue;  // the quality section edits it (ui/quality_panel.cpp)
         // in pixel mode epsilon counts sub-sample footprints: drag by hundredths
         bool pixels = row.key == "epsilon" && r.epsilonMode == scene::EpsilonMode::Pixel;
-        set(settingWidget(row, r, pixels ? 0.01 : 0.0));
+        set(settingWidget(row, r, pixels ? 0.01 : 0.0), row.key);
     }
     ImGui::PopItemWidth();
 }
 
 void drawEnvironmentPanel(Editor& editor, UiState& ui) {
     scene::Environment e = editor.scene().environment;
-    auto set = [&](WidgetEdit edit) {
-        commitEdit(editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; });
+    auto set = [&](WidgetEdit edit, const std::string& path) {
+        commitEdit(editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; }, path);
     };
     ImGui::PushItemWidth(-130);
-    for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) set(settingWidget(row, e));
+    for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) {
+        set(settingWidget(row, e), "environment." + std::string(row.key));
+    }
     ImGui::Separator();
     ImGui::TextDisabled("Ground plane");
-    for (const scene::Setting<scene::Ground>& row : scene::groundSettings()) set(settingWidget(row, e.ground));
+    for (const scene::Setting<scene::Ground>& row : scene::groundSettings()) {
+        set(settingWidget(row, e.ground), "environment.ground." + std::string(row.key));
+    }
     const std::string& current = e.ground.material;
     if (ImGui::BeginCombo("material", current.empty() ? "(default)" : current.c_str())) {
         if (ImGui::Selectable("(default)", current.empty())) {
             e.ground.material.clear();
-            set({true, true});
+            set({true, true}, "environment.ground.material");
         }
         for (const scene::Material& m : editor.scene().materials) {
             if (ImGui::Selectable(m.name.c_str(), m.name == current)) {
                 e.ground.material = m.name;
-                set({true, true});
+                set({true, true}, "environment.ground.material");
             }
         }
         ImGui::EndCombo();

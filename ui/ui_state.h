@@ -3,6 +3,7 @@
 // view options, and the messages shown to the user. Panels read and change it;
 // the scene itself changes only through the Editor.
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,10 +19,19 @@ enum class CompareMode { Off, SideBySide, Difference };
 enum class InspectorTab { Node, Materials, Lights, Render, Environment, Library };
 inline constexpr const char* kInspectorTabNames[] = {"node", "materials", "lights", "render", "environment", "library"};
 
+// What the selection's handles in the viewport do (ui/transform_handles.h).
+enum class HandleMode { Move, Rotate, Scale };
+inline constexpr const char* kHandleModeNames[] = {"move", "rotate", "scale"};
+
 struct Message {
     enum class Level { Info, Error };
     Level level = Level::Info;
     std::string text;
+    // Kept by updateProblems (ui/problems.h):
+    bool watched = false;       // revision and causeValue are set
+    bool resolved = false;      // its cause was fixed or replaced by a newer error
+    std::uint64_t revision = 0;  // the editor's revision when it was raised
+    std::string causeValue;     // the value at its cause then, as JSON text
 };
 
 struct UiState {
@@ -30,12 +40,16 @@ struct UiState {
     bool showStats = true;       // statistics overlay on the viewport
     bool stepHeat = false;       // show the step-count heat image instead of colour
     bool showThumbnails = true;  // per-node thumbnails in the scene tree
+    bool showProblems = false;   // the Problems window
     bool pixelReadout = true;    // distance, steps and node under the cursor, over the viewport
+    HandleMode handles = HandleMode::Move;
     // A tab to bring to the front on the next frame (scripts), then cleared.
     std::optional<InspectorTab> showTab;
 
-    // Newest last; the status bar shows the newest, the log window all.
+    // Newest last; the status bar shows the newest while it is current, the
+    // Problems window the errors not yet resolved.
     std::vector<Message> messages;
+    std::uint64_t problemsCheckedAt = 0;  // the editor revision updateProblems last checked
     // Problems of the last refused inspector edit, shown inline under it.
     std::vector<std::string> inspectorProblems;
 
@@ -48,8 +62,14 @@ struct UiState {
     // A subtree being dragged in the scene tree (thumbnails pause meanwhile).
     bool draggingNode = false;
 
-    void info(std::string text) { messages.push_back({Message::Level::Info, std::move(text)}); }
-    void error(std::string text) { messages.push_back({Message::Level::Error, std::move(text)}); }
+    void info(std::string text) { add(Message::Level::Info, std::move(text)); }
+    void error(std::string text) { add(Message::Level::Error, std::move(text)); }
+    void add(Message::Level level, std::string text) {
+        Message m;
+        m.level = level;
+        m.text = std::move(text);
+        messages.push_back(std::move(m));
+    }
 };
 
 }  // namespace sdfwb::ui

@@ -29,6 +29,12 @@ std::optional<glm::dvec2> projectToView(const scene::Scene& scene, const glm::dv
     return glm::dvec2(0.5 * (u * height + width), height - 0.5 * (v * height + height));
 }
 
+ViewRay viewRay(const scene::Scene& scene, int width, int height, const glm::dvec2& point) {
+    scene::CameraFrame f = scene::cameraFrame(scene.camera);
+    double u = (2.0 * point.x - width) / height * f.tanHalfFov, v = (height - 2.0 * point.y) / height * f.tanHalfFov;
+    return {f.eye, glm::normalize(f.forward + u * f.right + v * f.up)};
+}
+
 std::optional<ImageRect> outlineRect(const scene::Scene& scene, const NodePath& path, int width, int height) {
     program::Bounds b = worldBounds(scene.root, path);
     if (b.empty || b.infinite) return std::nullopt;

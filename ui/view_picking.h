@@ -31,4 +31,10 @@ std::optional<ImageRect> outlineRect(const scene::Scene& scene, const NodePath& 
 // nullopt behind the eye.
 std::optional<glm::dvec2> projectToView(const scene::Scene& scene, const glm::dvec3& world, int width, int height);
 
+// The eye ray through image point (x, y): projectToView's inverse.
+struct ViewRay {
+    glm::dvec3 origin, direction;  // direction unit
+};
+ViewRay viewRay(const scene::Scene& scene, int width, int height, const glm::dvec2& point);
+
 }  // namespace sdfwb::ui

@@ -21,6 +21,7 @@
 #include "ui/primitive_library.h"
 #include "ui/editor.h"
 #include "ui/script.h"
+#include "ui/transform_handles.h"
 #include "ui/ui_state.h"
 
 struct GLFWwindow;
@@ -76,6 +77,9 @@ struct AppState {
     FileState files;
     ViewRequest view;
     PixelReadout readout;  // the viewport's pixel under the cursor
+    ui::HandleDrag handleDrag;     // a move, rotate or scale handle held in the viewport
+    bool pressTookHandle = false;
+    bool showShortcuts = false;    // Help > Keyboard shortcuts  // the last press in the viewport was on a handle (not a click to select)
     std::vector<KeyPress> keyPresses;  // since the last frame
     std::uint64_t lastRevision = 0;    // the editor's revision seen last frame
     double lastChange = 0;             // glfwGetTime() when it last changed

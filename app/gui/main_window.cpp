@@ -14,6 +14,7 @@
 #include "ui/long_text.h"
 #include "ui/panels.h"
 #include "ui/placement.h"
+#include "ui/problems.h"
 #include "ui/quality_panel.h"
 #include "ui/user_paths.h"
 #include "ui/view_camera.h"
@@ -93,6 +94,90 @@ bool viewShortcut(AppState& app, const KeyPress& press, bool ctrl) {
     }
 }
 
+// The keyboard shortcuts besides the keypad's views: one table that the key
+// handler runs and Help > Keyboard shortcuts lists.
+struct Shortcut {
+    int key;
+    bool ctrl, shift;
+    bool anyShift;  // Shift held or not
+    const char* keys;
+    const char* what;
+    void (*run)(AppState&);
+};
+constexpr Shortcut kShortcuts[] = {
+    {GLFW_KEY_Z, true, false, false, "Ctrl+Z", "Undo", [](AppState& a) { undo(a); }},
+    {GLFW_KEY_Z, true, true, false, "Ctrl+Shift+Z", "Redo", [](AppState& a) { redo(a); }},
+    {GLFW_KEY_Y, true, false, false, "Ctrl+Y", "Redo", [](AppState& a) { redo(a); }},
+    {GLFW_KEY_N, true, false, false, "Ctrl+N", "New scene", [](AppState& a) { request(a, {PendingAction::Kind::New, {}}); }},
+    {GLFW_KEY_O, true, false, false, "Ctrl+O", "Open...", [](AppState& a) { openDialog(a, FileDialogState::Purpose::Open); }},
+    {GLFW_KEY_S, true, false, false, "Ctrl+S", "Save", [](AppState& a) { saveOrAsk(a); }},
+    {GLFW_KEY_S, true, true, false, "Ctrl+Shift+S", "Save as...", [](AppState& a) { openDialog(a, FileDialogState::Purpose::SaveAs); }},
+    {GLFW_KEY_E, true, false, true, "Ctrl+E", "Export snapshot...", [](AppState& a) { a.snapshot.dialogOpen = true; }},
+    {GLFW_KEY_Q, true, false, true, "Ctrl+Q", "Quit", [](AppState& a) { request(a, {PendingAction::Kind::Quit, {}}); }},
+    {GLFW_KEY_D, true, false, true, "Ctrl+D", "Duplicate the selection", [](AppState& a) { duplicateSelection(a); }},
+    {GLFW_KEY_DELETE, false, false, true, "Del", "Delete the selection", [](AppState& a) { deleteSelection(a); }},
+    {GLFW_KEY_1, true, false, true, "Ctrl+1", "GLSL backend", [](AppState& a) { a.ui.backend = ui::ViewBackend::Gl; }},
+    {GLFW_KEY_2, true, false, true, "Ctrl+2", "CPU backend", [](AppState& a) { a.ui.backend = ui::ViewBackend::Cpu; }},
+    {GLFW_KEY_G, false, false, true, "G", "Move handles", [](AppState& a) { a.ui.handles = ui::HandleMode::Move; }},
+    {GLFW_KEY_R, false, false, true, "R", "Rotate handles", [](AppState& a) { a.ui.handles = ui::HandleMode::Rotate; }},
+    {GLFW_KEY_S, false, false, true, "S", "Scale handles", [](AppState& a) { a.ui.handles = ui::HandleMode::Scale; }},
+    {GLFW_KEY_F, false, false, true, "F", "Frame all (also Home)", [](AppState& a) { frameAll(a); }},
+    {GLFW_KEY_H, false, false, true, "H", "Step heat view on or off", [](AppState& a) { a.ui.stepHeat = !a.ui.stepHeat; }},
+    {GLFW_KEY_F12, false, false, true, "F12", "Save the window as PNG", [](AppState& a) { saveWindowPicture(a); }},
+};
+
+// How the mouse works in the viewport, for Help > Keyboard shortcuts.
+constexpr const char* kMouseHelp[][2] = {
+    {"Left drag", "Orbit the camera (a view change: not an undo step)"},
+    {"Right or middle drag", "Pan"},
+    {"Wheel", "Zoom"},
+    {"Click", "Select what the pixel shows (the ground or sky: nothing)"},
+    {"Drag a handle", "Move, rotate or scale the selection, one undo step; Ctrl snaps"},
+};
+
+void shortcutsWindow(AppState& app) {
+    if (!app.showShortcuts) return;
+    ImGui::SetNextWindowSize(ImVec2(520, 560), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Keyboard shortcuts", &app.showShortcuts)) {
+        auto rows = [](const char* id, auto each) {
+            if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) return;
+            each();
+            ImGui::EndTable();
+        };
+        auto row = [](const char* keys, const char* what) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(keys);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(what);
+        };
+        ImGui::TextDisabled("Keys (not while typing in a field)");
+        rows("keys", [&] {
+            for (const Shortcut& s : kShortcuts) row(s.keys, s.what);
+            row("Home", "Frame all");
+            row("Keypad .", "Frame the selection");
+            for (const ViewKey& v : kViewKeys) row(v.shortcut, v.menu);
+            row("Keypad 4, 6, 8, 2", "Orbit in 15 degree steps");
+        });
+        ImGui::Separator();
+        ImGui::TextDisabled("Mouse in the viewport");
+        rows("mouse", [&] {
+            for (const auto& m : kMouseHelp) row(m[0], m[1]);
+        });
+    }
+    ImGui::End();
+}
+
+// Where the documentation is, relative to the source tree.
+constexpr const char* kDocs[][2] = {
+    {"docs/gui.md", "The workbench window"},
+    {"docs/gui-script.md", "GUI scripts (--script)"},
+    {"docs/scene-format.md", "The scene file format"},
+    {"docs/expression-language.md", "Formulas of sdf nodes"},
+    {"docs/implicit-surfaces.md", "Implicit and polynomial surfaces"},
+    {"docs/rendering.md", "Rendering and the two backends"},
+};
+
 void menuBar(AppState& app) {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
@@ -147,12 +232,24 @@ void menuBar(AppState& app) {
         ImGui::MenuItem("Node thumbnails", nullptr, &app.ui.showThumbnails);
         ImGui::MenuItem("Pixel readout", nullptr, &app.ui.pixelReadout);
         ImGui::MenuItem("Polynomial (implicitize)", nullptr, &app.polynomial.open);
+        ImGui::MenuItem("Problems", nullptr, &app.ui.showProblems);
         ImGui::Separator();
         if (ImGui::MenuItem("Frame all", "Home, F")) frameAll(app);
         if (ImGui::MenuItem("Frame selected", "Keypad .", false, app.editor.selection().has_value())) frameSelected(app);
         for (const ViewKey& view : kViewKeys) {
             if (ImGui::MenuItem(view.menu, view.shortcut)) setPreset(app, view.preset);
         }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help")) {
+        if (ImGui::MenuItem("Keyboard shortcuts")) app.showShortcuts = true;
+        ImGui::Separator();
+        ImGui::TextDisabled("Documentation (in the source tree; click to copy the path)");
+        for (const auto& doc : kDocs) {
+            if (ImGui::MenuItem(doc[1], doc[0])) ImGui::SetClipboardText(doc[0]);
+        }
+        ImGui::Separator();
+        ImGui::TextDisabled("sdf-workbench --help lists the commands");
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -234,28 +331,34 @@ void inspectorPanel(AppState& app, ImVec2 origin, float height) {
     ImGui::End();
 }
 
+// The newest message while it is current (an info, or an error no edit has
+// passed yet), else how many problems are open; a click opens the Problems window.
 void statusBar(AppState& app, ImVec2 origin, float width, float height) {
     ImGui::SetNextWindowPos(origin);
     ImGui::SetNextWindowSize(ImVec2(width, height));
+    ui::updateProblems(app.ui, app.editor);  // this frame's messages, with this frame's edits
     if (ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoDecoration)) {
-        if (!app.ui.messages.empty()) {
-            const ui::Message& last = app.ui.messages.back();
-            bool error = last.level == ui::Message::Level::Error;
+        const ui::Message* last = app.ui.messages.empty() ? nullptr : &app.ui.messages.back();
+        size_t open = ui::openErrors(app.ui).size();
+        bool current = last && !last->resolved &&
+                       (last->level == ui::Message::Level::Info || last->revision == app.editor.revision());
+        // clear of the progress text on the right, whatever the message's length
+        const float room = width - kProgressWidth - 24;
+        if (current) {
+            bool error = last->level == ui::Message::Level::Error;
             ImGui::PushStyleColor(ImGuiCol_Text, error ? ImVec4(1, 0.45f, 0.4f, 1) : ImVec4(0.75f, 0.8f, 0.85f, 1));
-            // clear of the progress text on the right, whatever the message's length
-            ui::oneLineText(last.text, width - kProgressWidth - 24);
+            std::string more = open > 1 || (open == 1 && !error) ? "  (" + std::to_string(open) + " problems)" : "";
+            ui::oneLineText(last->text + more, room);
             ImGui::PopStyleColor();
-            if (ImGui::IsItemHovered()) {
-                ImGui::BeginTooltip();
-                size_t first = app.ui.messages.size() > 12 ? app.ui.messages.size() - 12 : 0;
-                for (size_t i = first; i < app.ui.messages.size(); ++i) {
-                    ImGui::TextUnformatted(ui::shortened(app.ui.messages[i].text, 300).c_str());
-                }
-                ImGui::EndTooltip();
-            }
+        } else if (open > 0) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.5f, 1));
+            ImGui::Text("%zu %s: click here to list %s", open, open == 1 ? "problem" : "problems", open == 1 ? "it" : "them");
+            ImGui::PopStyleColor();
         } else {
-            ImGui::TextDisabled("Drag in the viewport to orbit, right-drag to pan, wheel to zoom.");
+            ImGui::TextDisabled("Drag in the viewport to orbit, right-drag to pan, wheel to zoom; drag a handle of the selection to move it.");
         }
+        if (ImGui::IsItemHovered() && open > 0) ImGui::SetTooltip("Click to list the problems");
+        if (ImGui::IsItemClicked()) app.ui.showProblems = true;
         ImGui::SameLine(width - kProgressWidth);
         ImGui::TextDisabled("%s", app.viewport->stats().status.c_str());
     }
@@ -324,22 +427,11 @@ void handleShortcuts(AppState& app) {
     for (const KeyPress& press : presses) {
         bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
         if (viewShortcut(app, press, ctrl)) continue;
-        switch (ctrl ? press.key : -press.key) {  // negative: the key without Ctrl
-        case GLFW_KEY_Z: shift ? redo(app) : undo(app); break;
-        case GLFW_KEY_Y: redo(app); break;
-        case GLFW_KEY_S: shift ? openDialog(app, FileDialogState::Purpose::SaveAs) : saveOrAsk(app); break;
-        case GLFW_KEY_O: openDialog(app, FileDialogState::Purpose::Open); break;
-        case GLFW_KEY_N: request(app, {PendingAction::Kind::New, {}}); break;
-        case GLFW_KEY_Q: request(app, {PendingAction::Kind::Quit, {}}); break;
-        case GLFW_KEY_E: app.snapshot.dialogOpen = true; break;
-        case GLFW_KEY_D: duplicateSelection(app); break;
-        case GLFW_KEY_1: app.ui.backend = ui::ViewBackend::Gl; break;
-        case GLFW_KEY_2: app.ui.backend = ui::ViewBackend::Cpu; break;
-        case -GLFW_KEY_DELETE: deleteSelection(app); break;
-        case -GLFW_KEY_F: frameAll(app); break;
-        case -GLFW_KEY_H: app.ui.stepHeat = !app.ui.stepHeat; break;
-        case -GLFW_KEY_F12: saveWindowPicture(app); break;
-        default: break;
+        for (const Shortcut& s : kShortcuts) {
+            if (s.key == press.key && s.ctrl == ctrl && (s.shift == shift || s.anyShift)) {
+                s.run(app);
+                break;
+            }
         }
     }
 }
@@ -365,6 +457,8 @@ void drawMainWindow(AppState& app) {
     ImGui::PopStyleVar();
     statusBar(app, ImVec2(origin.x, origin.y + height), width, statusHeight);
     ui::drawPolynomialPanel(app.editor, app.ui, app.polynomial);
+    ui::drawProblemsWindow(app.editor, app.ui);
+    shortcutsWindow(app);
     snapshotDialog(app);
     drawFileDialogs(app);
 }

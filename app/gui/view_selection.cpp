@@ -2,8 +2,11 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "app/gui/app_state.h"
 #include "ui/node_path.h"
+#include "ui/transform_handles.h"
 #include "ui/view_picking.h"
 
 namespace sdfwb::app::gui {
@@ -12,10 +15,54 @@ namespace {
 constexpr float kClickSlop = 3.0f;  // pixels a click may move and still not be a drag
 constexpr ImU32 kOutline = IM_COL32(255, 190, 60, 255);
 
-// The image pixel (framebuffer pixels from the top left) under a screen point.
-ImVec2 imagePixel(const AppState& app, ImVec2 corner, ImVec2 size, ImVec2 screen) {
-    return ImVec2((screen.x - corner.x) / size.x * static_cast<float>(app.view.width),
-                  (screen.y - corner.y) / size.y * static_cast<float>(app.view.height));
+constexpr ImU32 kAxisColours[] = {IM_COL32(235, 70, 70, 255), IM_COL32(110, 210, 80, 255), IM_COL32(80, 140, 245, 255)};
+constexpr ImU32 kActiveHandle = IM_COL32(255, 230, 90, 255);
+
+// The screen point of an image pixel.
+ImVec2 screenPoint(const AppState& app, ImVec2 corner, ImVec2 size, glm::dvec2 p) {
+    return ImVec2(corner.x + static_cast<float>(p.x) / static_cast<float>(app.view.width) * size.x,
+                  corner.y + static_cast<float>(p.y) / static_cast<float>(app.view.height) * size.y);
+}
+
+// The selection's handles; the one being dragged, or else under the mouse, highlighted.
+void handles(const AppState& app, ImVec2 corner, ImVec2 size) {
+    if (!app.editor.selection()) return;
+    ui::HandleMode mode = app.ui.handles;
+    std::optional<ui::HandleLayout> layout =
+        ui::handleLayout(app.editor.scene(), *app.editor.selection(), mode, app.view.width, app.view.height);
+    if (!layout) return;
+    std::optional<int> lit;
+    if (app.handleDrag.active()) {
+        lit = app.handleDrag.axis();
+    } else if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+        ImVec2 mouse = imagePixel(app, corner, size, ImGui::GetIO().MousePos);
+        lit = ui::handleAt(*layout, mode, glm::dvec2(mouse.x, mouse.y));
+    }
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(corner, ImVec2(corner.x + size.x, corner.y + size.y), true);
+    ImVec2 pivot = screenPoint(app, corner, size, layout->pivot);
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!layout->visible[axis]) continue;
+        ImU32 colour = lit == axis ? kActiveHandle : kAxisColours[axis];
+        if (mode == ui::HandleMode::Rotate) {
+            ImVec2 ring[ui::HandleLayout::kRingPoints];
+            for (int i = 0; i < ui::HandleLayout::kRingPoints; ++i) ring[i] = screenPoint(app, corner, size, layout->ring[axis][i]);
+            draw->AddPolyline(ring, ui::HandleLayout::kRingPoints, colour, ImDrawFlags_Closed, lit == axis ? 3.5f : 2.0f);
+            continue;
+        }
+        ImVec2 tip = screenPoint(app, corner, size, layout->tip[axis]);
+        draw->AddLine(pivot, tip, IM_COL32(0, 0, 0, 120), 5.0f);
+        draw->AddLine(pivot, tip, colour, lit == axis ? 3.5f : 2.5f);
+        if (mode == ui::HandleMode::Scale) {
+            draw->AddRectFilled(ImVec2(tip.x - 5, tip.y - 5), ImVec2(tip.x + 5, tip.y + 5), colour);
+        } else {
+            glm::dvec2 along = glm::normalize(layout->tip[axis] - layout->pivot) * 10.0, across(-along.y * 0.5, along.x * 0.5);
+            auto at = [&](glm::dvec2 d) { return ImVec2(tip.x + static_cast<float>(d.x), tip.y + static_cast<float>(d.y)); };
+            draw->AddTriangleFilled(at(along), at(across), at(-across), colour);
+        }
+    }
+    draw->AddCircleFilled(pivot, 4.0f, IM_COL32(240, 240, 240, 230));
+    draw->PopClipRect();
 }
 
 void outline(const AppState& app, ImVec2 corner, ImVec2 size) {
@@ -23,13 +70,9 @@ void outline(const AppState& app, ImVec2 corner, ImVec2 size) {
     std::optional<ui::ImageRect> rect =
         ui::outlineRect(app.editor.scene(), *app.editor.selection(), app.view.width, app.view.height);
     if (!rect) return;
-    auto screen = [&](glm::dvec2 p) {
-        return ImVec2(corner.x + static_cast<float>(p.x) / static_cast<float>(app.view.width) * size.x,
-                      corner.y + static_cast<float>(p.y) / static_cast<float>(app.view.height) * size.y);
-    };
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->PushClipRect(corner, ImVec2(corner.x + size.x, corner.y + size.y), true);
-    ImVec2 a = screen(rect->min), b = screen(rect->max);
+    ImVec2 a = screenPoint(app, corner, size, rect->min), b = screenPoint(app, corner, size, rect->max);
     draw->AddRect(ImVec2(a.x - 3, a.y - 3), ImVec2(b.x + 3, b.y + 3), IM_COL32(0, 0, 0, 140), 0, 0, 4.0f);
     draw->AddRect(ImVec2(a.x - 3, a.y - 3), ImVec2(b.x + 3, b.y + 3), kOutline, 0, 0, 2.0f);
     draw->PopClipRect();
@@ -66,9 +109,14 @@ void readout(AppState& app, ImVec2 corner, ImVec2 size) {
 
 }  // namespace
 
+ImVec2 imagePixel(const AppState& app, ImVec2 corner, ImVec2 size, ImVec2 screen) {
+    return ImVec2((screen.x - corner.x) / size.x * static_cast<float>(app.view.width),
+                  (screen.y - corner.y) / size.y * static_cast<float>(app.view.height));
+}
+
 void viewSelection(AppState& app, ImVec2 corner, ImVec2 size) {
     if (app.view.width <= 0 || app.view.height <= 0) return;
-    if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !app.pressTookHandle) {
         ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
         if (std::hypot(drag.x, drag.y) < kClickSlop) {
             ImVec2 pixel = imagePixel(app, corner, size, ImGui::GetIO().MousePos);
@@ -77,6 +125,7 @@ void viewSelection(AppState& app, ImVec2 corner, ImVec2 size) {
         }
     }
     outline(app, corner, size);
+    handles(app, corner, size);
     if (app.ui.pixelReadout && ImGui::IsItemHovered() && !ImGui::IsItemActive()) readout(app, corner, size);
 }
 

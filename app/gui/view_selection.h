@@ -1,7 +1,7 @@
 #pragma once
 // Selection in the viewport: a click (press and release without a drag)
-// selects the node under the pixel, the selection is outlined over the image,
-// and a readout shows what the pixel under the cursor holds (distance, steps,
+// selects the node under the pixel, the selection is outlined over the image
+// with its move, rotate or scale handles (ui/transform_handles.h), and a readout shows what the pixel under the cursor holds (distance, steps,
 // node). All picks come from the shared CPU path (cpu/pick.h).
 
 #include <optional>
@@ -21,6 +21,9 @@ struct PixelReadout {
     std::uint64_t revision = 0;
     std::optional<cpu::PickResult> pick;
 };
+
+// The image pixel (framebuffer pixels from the top left) under a screen point.
+ImVec2 imagePixel(const AppState& app, ImVec2 corner, ImVec2 size, ImVec2 screen);
 
 // Call right after the viewport's camera button (the last item), with the
 // image's screen rectangle.

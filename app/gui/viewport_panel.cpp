@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <imgui.h>
 
+#include <glm/vec2.hpp>
+
 #include "app/gui/view_selection.h"
+#include "image/encoding.h"
+#include "image/image.h"
 #include "ui/view_camera.h"
 
 namespace sdfwb::app::gui {
@@ -13,12 +18,29 @@ namespace {
 
 // Orbit with the left button, pan the target with the right or middle
 // button, distance with the wheel: view changes, not undo steps (ui/view_camera.h).
-bool cameraControls(AppState& app, ImVec2 size) {
+// A left press on a handle of the selection drags the handle instead (Ctrl
+// snaps), one undo step per drag.
+bool cameraControls(AppState& app, ImVec2 corner, ImVec2 size) {
     ImGui::InvisibleButton("camera", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
     const ImGuiIO& io = ImGui::GetIO();
     bool active = ImGui::IsItemActive();
+    ImVec2 pixel = imagePixel(app, corner, size, io.MousePos);
+    if (ImGui::IsItemActivated()) {
+        app.pressTookHandle = ImGui::IsMouseClicked(ImGuiMouseButton_Left) && app.ui.compare == ui::CompareMode::Off &&
+                              app.handleDrag.begin(app.editor, app.ui.handles, app.view.width, app.view.height,
+                                                   glm::dvec2(pixel.x, pixel.y));
+    }
+    if (app.handleDrag.active()) {
+        if (!active) {
+            app.handleDrag.end(app.editor);
+        } else {  // every frame, so pressing or letting go of Ctrl snaps at once
+            ui::Problems problems = app.handleDrag.update(app.editor, glm::dvec2(pixel.x, pixel.y), io.KeyCtrl);
+            if (!problems.empty()) app.ui.error(problems.front());
+        }
+        return active;
+    }
     const scene::Scene& s = app.editor.scene();
     if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
         ImVec2 d = io.MouseDelta;
@@ -63,6 +85,16 @@ void toolbar(AppState& app) {
     ImGui::Checkbox("step heat", &ui.stepHeat);
     ImGui::SameLine();
     ImGui::Checkbox("stats", &ui.showStats);
+    ImGui::SameLine(0, 14);
+    static constexpr const char* kModes[] = {"Move", "Rotate", "Scale"};
+    static constexpr const char* kTips[] = {"Drag an arrow of the selection to move it along that axis (G); Ctrl snaps to 0.1",
+                                            "Drag a ring of the selection to turn it about that axis (R); Ctrl snaps to 15 degrees",
+                                            "Drag a handle of the selection to scale it, uniformly (S); Ctrl snaps to 0.1 of its size"};
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) ImGui::SameLine();
+        if (ImGui::RadioButton(kModes[i], ui.handles == static_cast<ui::HandleMode>(i))) ui.handles = static_cast<ui::HandleMode>(i);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kTips[i]);
+    }
     ImGui::SameLine(0, 14);
     if (ImGui::Button("Frame all")) frameAll(app);
     ImGui::SameLine();
@@ -114,6 +146,33 @@ void slotImage(const SlotImage& slot, ImVec2 corner, ImVec2 size, const char* ca
         bottom -= band;
     }
     if (*caption) draw->AddText(ImVec2(corner.x + 8, bottom - 22), IM_COL32_WHITE, caption);
+}
+
+// The heat view's key: the ramp from 0 steps to the scene's max steps, at the right edge.
+void heatLegend(const AppState& app, ImVec2 corner, ImVec2 size) {
+    constexpr int kBands = 32;
+    const float barWidth = 14, barHeight = std::min(220.0f, size.y - 80);
+    if (barHeight < 40) return;
+    ImVec2 top(corner.x + size.x - barWidth - 56, corner.y + 30);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(ImVec2(top.x - 6, top.y - 22), ImVec2(corner.x + size.x - 6, top.y + barHeight + 8),
+                        IM_COL32(20, 22, 26, 190), 4);
+    auto colour = [](float t) {
+        image::LinearRgb c = image::heatRamp(t);
+        return IM_COL32(image::encodeSrgb8(c.r), image::encodeSrgb8(c.g), image::encodeSrgb8(c.b), 255);
+    };
+    for (int i = 0; i < kBands; ++i) {  // many steps at the top
+        float t0 = 1.0f - static_cast<float>(i) / kBands, t1 = 1.0f - static_cast<float>(i + 1) / kBands;
+        float y0 = top.y + barHeight * static_cast<float>(i) / kBands, y1 = top.y + barHeight * static_cast<float>(i + 1) / kBands;
+        draw->AddRectFilledMultiColor(ImVec2(top.x, y0), ImVec2(top.x + barWidth, y1), colour(t0), colour(t0), colour(t1), colour(t1));
+    }
+    const int maxSteps = app.editor.scene().render.maxSteps;
+    draw->AddText(ImVec2(top.x, top.y - 18), IM_COL32(230, 232, 236, 255), "steps");
+    for (int k = 0; k <= 2; ++k) {
+        std::string label = std::to_string(maxSteps * (2 - k) / 2);
+        float y = top.y + barHeight * static_cast<float>(k) / 2 - ImGui::GetTextLineHeight() / 2;
+        draw->AddText(ImVec2(top.x + barWidth + 6, y), IM_COL32(230, 232, 236, 255), label.c_str());
+    }
 }
 
 void comparisonLine(const AppState& app) {
@@ -169,9 +228,10 @@ void drawViewportPanel(AppState& app) {
         break;
     }
     ImGui::SetCursorScreenPos(corner);
-    bool dragging = cameraControls(app, size);
+    bool dragging = cameraControls(app, corner, size);
     if (app.ui.compare == ui::CompareMode::Off) viewSelection(app, corner, size);
     viewHint(app, corner, size);
+    if (app.ui.stepHeat && app.ui.compare == ui::CompareMode::Off) heatLegend(app, corner, size);
     // A slider drag counts as interaction while it keeps changing the scene
     // (not, say, while a tree row is dragged): render the quick preview then.
     double now = ImGui::GetTime();

@@ -10,6 +10,11 @@
 
 namespace sdfwb::image {
 
+// The transfer function on [0, 1] (linear clamped first, NaN as 0) and its inverse;
+// colour swatches in the editor show linear values through it, as the render does.
+float srgbFromLinear(float linear);
+float linearFromSrgb(float srgb);
+
 std::uint8_t encodeSrgb8(float linear);
 
 // 3 bytes per pixel, same layout as image.rgb.

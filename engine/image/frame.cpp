@@ -33,12 +33,16 @@ Image stepHeatImage(const Frame& frame, double maxSteps) {
     Image heat(frame.color.width, frame.color.height);
     for (size_t i = 0; i < frame.steps.size(); ++i) {
         float t = maxSteps > 0 ? static_cast<float>(std::clamp(frame.steps[i] / maxSteps, 0.0, 1.0)) : 0.0f;
-        // blue (few steps) -> green -> red (many steps)
-        heat.rgb[3 * i + 0] = std::clamp(2.0f * t - 0.5f, 0.0f, 1.0f);
-        heat.rgb[3 * i + 1] = 1.0f - std::abs(2.0f * t - 1.0f);
-        heat.rgb[3 * i + 2] = std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f);
+        LinearRgb c = heatRamp(t);
+        heat.rgb[3 * i + 0] = c.r;
+        heat.rgb[3 * i + 1] = c.g;
+        heat.rgb[3 * i + 2] = c.b;
     }
     return heat;
+}
+
+LinearRgb heatRamp(float t) {
+    return {std::clamp(2.0f * t - 0.5f, 0.0f, 1.0f), 1.0f - std::abs(2.0f * t - 1.0f), std::clamp(1.0f - 2.0f * t, 0.0f, 1.0f)};
 }
 
 }  // namespace sdfwb::image

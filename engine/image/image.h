@@ -35,7 +35,14 @@ struct FrameStats {
 
 FrameStats frameStats(const Frame& frame);
 
-// Step-count heat image: steps / maxSteps mapped through a blue-to-red ramp (linear RGB).
+// Step-count heat image: steps / maxSteps mapped through heatRamp (linear RGB).
 Image stepHeatImage(const Frame& frame, double maxSteps);
+
+// The heat view's ramp at t in [0, 1]: blue (few steps), green, red (many); linear RGB.
+// The viewport's legend draws the same ramp.
+struct LinearRgb {
+    float r, g, b;
+};
+LinearRgb heatRamp(float t);
 
 }  // namespace sdfwb::image
