@@ -43,7 +43,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"negative_radius", document(kUnion + R"({"kind": "sphere", "radius": -1}]})"),
                   "root.children[2].radius: must be > 0 (got -1)"},
         ErrorCase{"unknown_field", document(R"({"kind": "sphere", "radus": 2})"),
-                  "root.radus: unknown field (sphere has: kind, material, name, radius)"},
+                  "root.radus: unknown field (sphere has: hidden, kind, material, name, radius, solo)"},
         ErrorCase{"unknown_kind", document(R"({"kind": "spere"})"),
                   "root.kind: unknown node kind \"spere\" (known: sphere, box, round_box, plane, torus, cone, "
                   "ellipsoid, cylinder, capsule, union, intersection, difference, smooth_union, "

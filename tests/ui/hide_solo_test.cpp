@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
+#include "support/still_script_host.h"
 #include "ui/script.h"
 #include "ui/view_picking.h"
 
@@ -13,19 +14,10 @@ namespace {
 
 scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
 
-struct Host : ScriptHost {
-    bool idle() const override { return true; }
-    std::string requestScreenshot(const std::filesystem::path&) override { return ""; }
-    std::string save(const std::filesystem::path&) override { return ""; }
-    std::string open(const std::filesystem::path&) override { return ""; }
-    void quit() override {}
-    PolynomialPanelState polynomial;
-    PolynomialPanelState& polynomialPanel() override { return polynomial; }
-};
 
 ScriptStatus run(Editor& editor, const std::string& text, std::string* error = nullptr) {
     UiState ui;
-    Host host;
+    StillScriptHost host;
     ScriptRunner runner(parseScript(text, "t.txt"), "t.txt");
     ScriptStatus status = ScriptStatus::Running;
     for (int i = 0; i < 20 && status == ScriptStatus::Running; ++i) status = runner.step(editor, ui, host);

@@ -8,6 +8,7 @@
 
 #include "program/rotation.h"
 #include "scene/scene_json.h"
+#include "support/still_script_host.h"
 #include "ui/script.h"
 #include "ui/transform_handles.h"
 #include "ui/view_picking.h"
@@ -164,21 +165,12 @@ TEST(TransformHandles, APressAwayFromTheHandlesStartsNoDrag) {
     EXPECT_FALSE(editor.canUndo());
 }
 
-struct Host : ScriptHost {
-    bool idle() const override { return true; }
-    std::string requestScreenshot(const std::filesystem::path&) override { return ""; }
-    std::string save(const std::filesystem::path&) override { return ""; }
-    std::string open(const std::filesystem::path&) override { return ""; }
-    void quit() override {}
-    PolynomialPanelState polynomial;
-    PolynomialPanelState& polynomialPanel() override { return polynomial; }
-    std::pair<int, int> viewSize() const override { return {kWidth, kHeight}; }
-};
 
 TEST(TransformHandles, ScriptsDragTheHandles) {
     Editor editor(defaultScene());
     UiState ui;
-    Host host;
+    StillScriptHost host;
+    host.size = {kWidth, kHeight};
     ScriptRunner runner(parseScript("select root.children[1].children[0].children[0]\nhandles rotate\ndrag z -50 snap\n"
                                     "handles scale\ndrag x 20\n",
                                     "t.txt"),
