@@ -12,11 +12,12 @@
 #include "glcontext/osmesa_context.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 // A union of `count` translated spheres: about 3 * count instructions.
 scene::Scene sphereCloud(int count) {
@@ -73,7 +74,7 @@ BENCHMARK(BM_GlDefault1280x720)->Unit(benchmark::kMillisecond)->UseRealTime()->I
 // same scene with max_depth 0 (range 0: no tree compiled, primary rays only),
 // 480x270 AA 1, CPU (2 threads) and GL, in one run.
 void rayTreeCost(benchmark::State& state, const char* file, bool gl) {
-    scene::Scene s = scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR "/scenes/") + file);
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/" + file);
     if (state.range(0) == 0) s.render.maxDepth = 0;
     program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
     if (!gl) {

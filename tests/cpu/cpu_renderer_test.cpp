@@ -15,11 +15,12 @@
 #include "image/image_io.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 TEST(CpuRenderer, OutputIsBitIdenticalForAnyThreadCount) {
     program::Program p = program::compileScene(defaultScene(), {.width = 96, .height = 54, .aa = 2});
@@ -87,9 +88,9 @@ TEST(CpuRenderer, CoverageOfASphereMatchesRaySphereIntersection) {
 TEST(CpuRenderer, DefaultSceneMatchesTheRegressionImage) {
     program::Program p = program::compileScene(defaultScene(), {.width = 160, .height = 90, .aa = 2});
     render::RenderOutcome outcome = cpu::renderCpu(p);
-    std::filesystem::path golden = SDFWB_SOURCE_DIR "/tests/data/default_160x90.png";
-    std::filesystem::create_directories(SDFWB_TEST_OUTPUT_DIR);
-    std::filesystem::path actual = std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "default_160x90.png";
+    std::filesystem::path golden = sdfwb::test::sourceDir() + "/tests/data/default_160x90.png";
+    std::filesystem::create_directories(sdfwb::test::outputDir());
+    std::filesystem::path actual = std::filesystem::path(sdfwb::test::outputDir()) / "default_160x90.png";
     image::writeImage(actual, outcome.frame.color);
     ASSERT_TRUE(std::filesystem::exists(golden)) << "golden image missing; candidate written to " << actual;
     std::vector<std::uint8_t> expected = image::encodeSrgb8(image::readImage(golden));

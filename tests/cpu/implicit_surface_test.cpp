@@ -12,6 +12,7 @@
 #include "cpu/cpu_renderer.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -28,7 +29,7 @@ std::vector<float> coverage(scene::Scene s) {
 }
 
 TEST(ImplicitSheet, CoversWhatTinyStepsCover) {
-    scene::Scene live = scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/hard/moebius_sheet.json");
+    scene::Scene live = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/hard/moebius_sheet.json");
     ASSERT_GT(live.root.real("sheet_thickness"), 0);
     scene::Scene tiny = live;
     tiny.root.set("max_step", 0.004);

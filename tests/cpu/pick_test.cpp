@@ -14,13 +14,14 @@
 #include "scene/camera_frame.h"
 #include "scene/scene_json.h"
 #include "support/scene_files.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
 
 using Path = std::vector<int>;
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 // Image coordinates (pixels from the top left) where a world point appears.
 glm::dvec2 project(const scene::Scene& scene, const program::Program& program, const glm::dvec3& world) {

@@ -7,6 +7,7 @@
 #include "cpu/cpu_renderer.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -48,7 +49,7 @@ TEST(RayTreeRender, AMirrorFloorShowsTheBackgroundTimesKpsMps) {
 TEST(RayTreeRender, OpaqueScenesRenderBitIdenticallyThroughTheTree) {
     for (const char* file : {"/scenes/default.json", "/scenes/tutorial/06_ambient_occlusion.json"}) {
         program::Program p =
-            program::compileScene(scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + file), {.width = 64, .height = 36, .aa = 2});
+            program::compileScene(scene::loadSceneFile(sdfwb::test::sourceDir() + file), {.width = 64, .height = 36, .aa = 2});
         ASSERT_FALSE(p.secondaryRays) << file;
         program::Program tree = p;
         tree.secondaryRays = true;

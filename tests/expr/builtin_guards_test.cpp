@@ -16,6 +16,7 @@
 #include "formula_eval.h"
 #include "sdf/glsl_sources.h"
 #include "sdf/shared.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -47,7 +48,7 @@ TEST(BuiltinGuards, TheLibraryCallsNoBuiltinThatHasATwin) {
 }
 
 TEST(BuiltinGuards, TheDocumentedTableNamesEveryGuardedBuiltin) {
-    std::ifstream in(SDFWB_SOURCE_DIR "/docs/shared-glsl-subset.md");
+    std::ifstream in(sdfwb::test::sourceDir() + "/docs/shared-glsl-subset.md");
     ASSERT_TRUE(in);
     std::stringstream doc;
     doc << in.rdbuf();

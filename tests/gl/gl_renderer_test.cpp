@@ -16,6 +16,7 @@
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
 #include "sdf/glsl_sources.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 using scene::Node;
 using scene::NodeKind;
 
-scene::Scene defaultScene() { return scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 // The generated map() function alone: the part of the shader the generator writes.
 std::string mapFunction(const std::string& shader) {
@@ -35,15 +36,15 @@ std::string mapFunction(const std::string& shader) {
 TEST(ShaderGenerator, MapFunctionMatchesGoldenText) {
     for (const char* name : {"scenes/default", "tests/data/golden/operators"}) {
         SCOPED_TRACE(name);
-        std::string scenePath = std::string(SDFWB_SOURCE_DIR "/") + name + ".json";
+        std::string scenePath = sdfwb::test::sourceDir() + "/" + name + ".json";
         program::Program p = program::compileScene(scene::loadSceneFile(scenePath));
         std::string actual = mapFunction(gl::generateFragmentShader(p));
         std::string goldenName = std::filesystem::path(name).filename().string();
-        std::filesystem::path golden = std::string(SDFWB_SOURCE_DIR "/tests/data/golden/") + goldenName + ".map.glsl";
-        std::filesystem::create_directories(SDFWB_TEST_OUTPUT_DIR);
-        std::ofstream(std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / (goldenName + ".map.glsl")) << actual;
+        std::filesystem::path golden = sdfwb::test::sourceDir() + "/tests/data/golden/" + goldenName + ".map.glsl";
+        std::filesystem::create_directories(sdfwb::test::outputDir());
+        std::ofstream(std::filesystem::path(sdfwb::test::outputDir()) / (goldenName + ".map.glsl")) << actual;
         std::ifstream in(golden);
-        ASSERT_TRUE(in) << "missing golden " << golden << "; candidate in " << SDFWB_TEST_OUTPUT_DIR;
+        ASSERT_TRUE(in) << "missing golden " << golden << "; candidate in " << sdfwb::test::outputDir();
         std::stringstream expected;
         expected << in.rdbuf();
         EXPECT_EQ(actual, expected.str());

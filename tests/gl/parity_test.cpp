@@ -14,6 +14,7 @@
 #include "parity/parity.h"
 #include "scene/scene_json.h"
 #include "support/scene_files.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -25,7 +26,7 @@ class Parity : public test::GlTest, public ::testing::WithParamInterface<test::S
 void keepFailureImages(const parity::ParityResult& r, const std::string& name) {
     if (!::testing::Test::HasFailure()) return;
     for (const std::filesystem::path& path :
-         parity::writeFailureImages(r, std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "parity", name)) {
+         parity::writeFailureImages(r, std::filesystem::path(sdfwb::test::outputDir()) / "parity", name)) {
         std::cout << "wrote " << path.string() << "\n";
     }
 }
@@ -86,7 +87,7 @@ TEST(ParityFailureImages, ExpectedActualAndDifferenceAreWritten) {
     r.glColor = image::Image(4, 2);
     r.glColor.rgb[3] = 1.0f;  // pixel (1, 0) red in the GL render
     std::vector<std::filesystem::path> paths =
-        parity::writeFailureImages(r, std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "parity", "synthetic");
+        parity::writeFailureImages(r, std::filesystem::path(sdfwb::test::outputDir()) / "parity", "synthetic");
     ASSERT_EQ(paths.size(), 3u);
     EXPECT_EQ(image::readImage(paths[0]).rgb, r.cpuColor.rgb);
     EXPECT_EQ(image::readImage(paths[1]).rgb, r.glColor.rgb);

@@ -15,6 +15,7 @@
 #include "program/compile_scene.h"
 #include "scene/camera_frame.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -82,7 +83,7 @@ class SingularSurface : public test::GlTest, public ::testing::WithParamInterfac
 // axes), which lie on F = 0 but which a ray meets with probability zero, so
 // the first-root reference misses them: at most a one-pixel line.
 TEST_P(SingularSurface, LiveMethodHasNoHolesAndAtMostLineFalseHits) {
-    scene::Scene s = scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR "/scenes/hard/") + GetParam() + ".json");
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/hard/" + GetParam() + ".json");
     const int w = 240, h = 135;
     auto reference = parity::referenceDepths(s, w, h);
     program::Program p = program::compileScene(s, {.width = w, .height = h, .aa = 1});

@@ -10,12 +10,13 @@
 #include "gl_test_support.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
 
 program::Program smallDefault(int aa) {
-    scene::Scene s = scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json");
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json");
     return program::compileScene(s, {120, 70, aa});
 }
 

@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.h"
 #include "io/temporary_files.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::io {
 namespace {
@@ -25,7 +26,7 @@ class AtomicFile : public ::testing::Test {
 protected:
     void SetUp() override {
         const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::path(SDFWB_TEST_OUTPUT_DIR) / "io" / info->name();
+        folder_ = fs::path(sdfwb::test::outputDir()) / "io" / info->name();
         fs::remove_all(folder_);
         fs::create_directories(folder_);
     }

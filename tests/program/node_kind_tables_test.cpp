@@ -11,6 +11,7 @@
 #include "program/bounds.h"
 #include "program/compile_scene.h"
 #include "scene/scene.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -84,7 +85,7 @@ TEST(NodeKindTable, ADeepChainOfOperatorsCompilesAndHasBounds) {
 }
 
 std::string readDoc(const std::string& name) {
-    std::ifstream in(std::string(SDFWB_SOURCE_DIR) + "/docs/" + name);
+    std::ifstream in(sdfwb::test::sourceDir() + "/docs/" + name);
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();

@@ -15,6 +15,7 @@
 #include "scene/settings_table.h"
 #include "sdf/glsl_sources.h"
 #include "sdf/shared.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
@@ -173,7 +174,7 @@ TEST(SettingsTables, EverySettingAndMaterialFieldReachesTheCompiledProgram) {
 
 // Every row of every table is read back as written, and documented.
 TEST(SettingsTables, EveryRowRoundTripsThroughJsonAndIsDocumented) {
-    std::ifstream in(std::string(SDFWB_SOURCE_DIR) + "/docs/scene-format.md");
+    std::ifstream in(sdfwb::test::sourceDir() + "/docs/scene-format.md");
     std::stringstream doc;
     doc << in.rdbuf();
     auto check = [&](const char* table, auto rows, auto select) {

@@ -11,12 +11,13 @@
 #include "cpu/cpu_backend.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb {
 namespace {
 
 program::Program smallDefault() {
-    scene::Scene s = scene::loadSceneFile(SDFWB_SOURCE_DIR "/scenes/default.json");
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json");
     return program::compileScene(s, {50, 30, 2});
 }
 

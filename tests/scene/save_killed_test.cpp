@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::scene {
 namespace {
@@ -26,11 +27,11 @@ std::size_t filesIn(const fs::path& folder) {
 }
 
 TEST(SceneSave, AKillInTheMiddleOfTheWriteLeavesThePreviousFile) {
-    const fs::path folder = fs::path(SDFWB_TEST_OUTPUT_DIR) / "save_killed";
+    const fs::path folder = fs::path(sdfwb::test::outputDir()) / "save_killed";
     fs::remove_all(folder);
     fs::create_directories(folder);
     const fs::path path = folder / "scene.json";
-    const Scene original = loadSceneFile(fs::path(SDFWB_SOURCE_DIR) / "scenes/default.json");
+    const Scene original = loadSceneFile(fs::path(sdfwb::test::sourceDir()) / "scenes/default.json");
     saveSceneFile(original, path);
     const std::string before = io::readTextFile(path);
     Scene edited = original;

@@ -10,11 +10,12 @@
 
 #include "scene/scene.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::test {
 
 inline scene::Scene moleculeScene(const std::string& name) {
-    return scene::loadSceneFile(SDFWB_SOURCE_DIR "/tests/data/large/" + name + ".json");
+    return scene::loadSceneFile(sdfwb::test::sourceDir() + "/tests/data/large/" + name + ".json");
 }
 
 // The same spheres under a hard union.

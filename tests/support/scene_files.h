@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 #include <vector>
+#include "support/source_tree.h"
 
 namespace sdfwb::test {
 
@@ -14,7 +15,7 @@ namespace sdfwb::test {
 struct SceneFile {
     std::string relative;  // e.g. "hard/thin_blade.json"
 
-    std::filesystem::path path() const { return std::filesystem::path(SDFWB_SOURCE_DIR "/scenes") / relative; }
+    std::filesystem::path path() const { return std::filesystem::path(sdfwb::test::sourceDir() + "/scenes") / relative; }
     // scenes/hard/intended/ holds the intended results of hard cases (parity::intendedSceneFile), ordinary scenes
     bool isHardCase() const { return relative.rfind("hard/", 0) == 0 && relative.rfind("hard/intended/", 0) != 0; }
     // A gtest-safe name: "hard_thin_blade".
@@ -30,7 +31,7 @@ struct SceneFile {
 inline void PrintTo(const SceneFile& file, std::ostream* out) { *out << file.relative; }
 
 inline std::vector<SceneFile> allSceneFiles() {
-    const std::filesystem::path root = SDFWB_SOURCE_DIR "/scenes";
+    const std::filesystem::path root = sdfwb::test::sourceDir() + "/scenes";
     std::vector<SceneFile> files;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
         if (entry.is_regular_file() && entry.path().extension() == ".json") {

@@ -5,6 +5,7 @@
 
 #include "scene/scene_json.h"
 #include "ui/editor.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -13,7 +14,7 @@ using scene::Node;
 using scene::NodeKind;
 
 scene::Scene defaultScene() {
-    return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json");
+    return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json");
 }
 
 const NodePath kBall = {0, 0};  // root.children[0].children[0]: the sphere "ball"

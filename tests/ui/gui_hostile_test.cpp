@@ -18,6 +18,7 @@
 #include "scene/scene_json.h"
 #include "ui/gui_run.h"
 #include "ui/node_path.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -36,7 +37,7 @@ std::size_t occurrences(const std::string& text, const std::string& part) {
 // The default scene at AA 1 with the ball's radius 0.4: the state the
 // scripts below leave after their edits.
 scene::Scene editedDefaultScene() {
-    scene::Scene expected = scene::loadSceneFile(fs::path(SDFWB_SOURCE_DIR) / "scenes/default.json");
+    scene::Scene expected = scene::loadSceneFile(fs::path(sdfwb::test::sourceDir()) / "scenes/default.json");
     expected.render.aa = 1;
     findNode(expected.root, {0, 0})->set("radius", 0.4);
     return expected;
@@ -67,7 +68,7 @@ TEST_F(GuiHostileTest, FilesAndValuesThatDoNotLoadKeepTheSceneAndItsUndoHistory)
                                      << std::string(200000, ']') << R"(, "root": {"kind": "sphere"}})";
     std::ofstream(dir / "deep_formula.json") << kHeader << R"("root": {"kind": "sdf", "formula": ")"
                                              << deepParentheses << R"("}})";
-    std::string whole = test::readAll(fs::path(SDFWB_SOURCE_DIR) / "scenes/default.json");
+    std::string whole = test::readAll(fs::path(sdfwb::test::sourceDir()) / "scenes/default.json");
     std::ofstream(dir / "truncated.json") << whole.substr(0, whole.size() / 2);
     test::runGuiScript(dir);
     ASSERT_FALSE(HasFailure());

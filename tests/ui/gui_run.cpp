@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include "support/source_tree.h"
 
 namespace sdfwb::test {
 
@@ -18,7 +19,7 @@ std::string readAll(const fs::path& path) {
 }
 
 fs::path makeGuiFolder(const std::string& name, const std::string& script) {
-    fs::path dir = fs::path(SDFWB_TEST_OUTPUT_DIR) / name;
+    fs::path dir = fs::path(sdfwb::test::outputDir()) / name;
     fs::remove_all(dir);
     fs::create_directories(dir / "config");
     fs::create_directories(dir / "state");

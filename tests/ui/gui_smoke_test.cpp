@@ -15,6 +15,7 @@
 #include "scene/scene_json.h"
 #include "ui/gui_run.h"
 #include "ui/node_path.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -72,7 +73,7 @@ TEST_F(GuiSmokeTest, ScriptedEditSwitchUndoAndSave) {
     EXPECT_LT(backendChange, 1.0) << "the CPU backend's view differs from the GLSL backend's";
     EXPECT_LT(undoChange, 0.05) << "undo did not restore the viewport";
 
-    scene::Scene expected = scene::loadSceneFile(fs::path(SDFWB_SOURCE_DIR) / "scenes/default.json");
+    scene::Scene expected = scene::loadSceneFile(fs::path(sdfwb::test::sourceDir()) / "scenes/default.json");
     expected.render.aa = 1;
     findNode(expected.root, {0, 0})->set("material", std::string("blue"));
     EXPECT_EQ(scene::loadSceneFile(dir / "saved.json"), expected);

@@ -8,11 +8,12 @@
 #include "support/still_script_host.h"
 #include "ui/script.h"
 #include "ui/view_picking.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 
 ScriptStatus run(Editor& editor, const std::string& text, std::string* error = nullptr) {

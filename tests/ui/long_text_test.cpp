@@ -14,6 +14,7 @@
 #include "ui/long_text.h"
 #include "ui/panel_widgets.h"
 #include "ui/polynomial_panel.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -93,8 +94,8 @@ TEST_F(LongTextTest, PolynomialWindowShowsA16KResultAndSavesItWhole) {
     }
 
     // The output folder exists only after tests that made it: make it here, so the test passes alone.
-    std::filesystem::create_directories(SDFWB_TEST_OUTPUT_DIR);
-    std::filesystem::path file = std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "long_text_result.txt";
+    std::filesystem::create_directories(sdfwb::test::outputDir());
+    std::filesystem::path file = std::filesystem::path(sdfwb::test::outputDir()) / "long_text_result.txt";
     EXPECT_EQ(saveText(file, generator + " = 0"), "");
     EXPECT_EQ(io::readTextFile(file), generator + " = 0");
     EXPECT_NE(saveText("/nonexistent-folder/result.txt", generator), "");

@@ -5,11 +5,12 @@
 
 #include "scene/scene_json.h"
 #include "ui/material_edits.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 TEST(MaterialEdits, RemovingAMaterialInUseReassignsItsUsers) {
     Editor editor(defaultScene());

@@ -9,6 +9,7 @@
 #include "scene/scene_json.h"
 #include "support/headless_imgui.h"
 #include "ui/panels.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -33,7 +34,7 @@ protected:
 
 // One node of every kind under the root union (unary kinds wrap a sphere).
 scene::Scene everyKind() {
-    scene::Scene scene = scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json");
+    scene::Scene scene = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json");
     scene.root.children.clear();
     for (const scene::KindSpec& spec : scene::allKinds()) {
         scene::Node node = scene::Node::make(spec.kind);

@@ -14,11 +14,12 @@
 #include "scene/scene_json.h"
 #include "ui/placement.h"
 #include "ui/view_camera.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 // The scene's field at a world point, without the node at `skip`.
 double fieldWithout(scene::Scene scene, const NodePath& skip, const glm::dvec3& world) {

@@ -7,12 +7,13 @@
 #include <fstream>
 
 #include "ui/primitive_library.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
 std::filesystem::path freshFolder(const std::string& name) {
-    std::filesystem::path folder = std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "primitive_library" / name;
+    std::filesystem::path folder = std::filesystem::path(sdfwb::test::outputDir()) / "primitive_library" / name;
     std::filesystem::remove_all(folder);
     return folder;
 }

@@ -7,11 +7,12 @@
 #include "scene/scene_json.h"
 #include "ui/panels.h"
 #include "ui/problems.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 TEST(Problems, TheCauseIsTheJsonPathAMessageStartsWith) {
     std::optional<ProblemCause> node = problemCause("root.children[0].children[0].radius: must be > 0 (got -1)");

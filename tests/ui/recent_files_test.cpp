@@ -8,12 +8,13 @@
 #include <fstream>
 
 #include "ui/user_paths.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
 TEST(RecentFiles, MissingFilesLeaveTheList) {
-    std::filesystem::path home = std::filesystem::path(SDFWB_TEST_OUTPUT_DIR) / "recent_files_test";
+    std::filesystem::path home = std::filesystem::path(sdfwb::test::outputDir()) / "recent_files_test";
     std::filesystem::remove_all(home);
     std::filesystem::create_directories(home);
     setenv("XDG_CONFIG_HOME", home.c_str(), 1);

@@ -8,6 +8,7 @@
 #include "scene/scene_json.h"
 #include "ui/script.h"
 #include "ui/view_camera.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -36,7 +37,7 @@ struct FakeHost : ScriptHost {
 };
 
 struct ScriptRun {
-    Editor editor{scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json")};
+    Editor editor{scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json")};
     UiState ui;
     FakeHost host;
     ScriptStatus status = ScriptStatus::Running;

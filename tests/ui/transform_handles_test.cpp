@@ -12,6 +12,7 @@
 #include "ui/script.h"
 #include "ui/transform_handles.h"
 #include "ui/view_picking.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -20,7 +21,7 @@ using scene::NodeKind;
 
 constexpr int kWidth = 480, kHeight = 270;
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 // Presses the handle of `axis`, moves `pixels` along its grip direction in a
 // few steps, releases.

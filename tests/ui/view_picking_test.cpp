@@ -7,11 +7,12 @@
 #include "scene/scene_json.h"
 #include "ui/script.h"
 #include "ui/view_picking.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
-scene::Scene defaultScene() { return scene::loadSceneFile(std::string(SDFWB_SOURCE_DIR) + "/scenes/default.json"); }
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 TEST(ViewPicking, AClickSelectsTheNodeUnderThePixel) {
     Editor editor(defaultScene());
