@@ -53,7 +53,8 @@ TEST_F(Cli, ArgumentsAreCheckedBeforeAnyWork) {
     ProcessResult dump = run("render -o " + path("a.png").string() + " --dump-shader " + path("a.frag").string());
     EXPECT_EQ(dump.exitCode, 2);
     EXPECT_EQ(dump.output, "sdf-workbench render: --dump-shader needs --backend gl (the cpu backend runs no shader)\n");
-    ProcessResult report = run(std::string("parity ") + sdfwb::test::sourceDir() + "/scenes/default.json --report /nonexistent/x.md");
+    ProcessResult report =
+        run(std::string("parity ") + sdfwb::test::sourceDir() + "/scenes/default.json --report /nonexistent/x.md");
     EXPECT_EQ(report.exitCode, 2);
     EXPECT_EQ(report.output, "sdf-workbench parity: cannot write /nonexistent/x.md: folder /nonexistent does not exist\n");
     ProcessResult screenshot = run("gui --screenshot /nonexistent/s.png");
@@ -62,7 +63,8 @@ TEST_F(Cli, ArgumentsAreCheckedBeforeAnyWork) {
     ProcessResult extension = run("gui --screenshot " + path("s.gif").string());
     EXPECT_EQ(extension.exitCode, 2);
     EXPECT_NE(extension.output.find("unknown image format '.gif'"), std::string::npos) << extension.output;
-    ProcessResult fail = run(std::string("compare ") + sdfwb::test::sourceDir() + "/tests/data/default_160x90.png " + sdfwb::test::sourceDir() + "/tests/data/default_160x90.png --fail -1");
+    ProcessResult fail = run(std::string("compare ") + sdfwb::test::sourceDir() + "/tests/data/default_160x90.png " +
+                             sdfwb::test::sourceDir() + "/tests/data/default_160x90.png --fail -1");
     EXPECT_EQ(fail.exitCode, 2);
     EXPECT_NE(fail.output.find("--fail"), std::string::npos) << fail.output;
     ProcessResult size = run("render -o " + path("b.png").string() + " --size 0x5");

@@ -23,7 +23,8 @@ namespace fs = std::filesystem;
 
 TEST_F(Cli, RenderWritesTheImageWithMetadataAndPrintsItsPath) {
     fs::path out = path("snapshot.png");
-    ProcessResult r = run(std::string("render ") + sdfwb::test::sourceDir() + "/scenes/default.json -o " + out.string() + " --size 64x36 --stats");
+    ProcessResult r = run(std::string("render ") + sdfwb::test::sourceDir() + "/scenes/default.json -o " +
+                          out.string() + " --size 64x36 --stats");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find(out.string()), std::string::npos);
     EXPECT_NE(r.output.find("hit ratio"), std::string::npos);
@@ -45,8 +46,8 @@ TEST_F(Cli, RenderWithoutASceneUsesTheBuiltInDefaultFromAnyFolder) {
 
 TEST_F(Cli, GlBackendRendersHeadlessAndDumpsItsShader) {
     fs::path out = path("gl.png"), shader = path("scene.frag");
-    ProcessResult r = run(std::string("render ") + sdfwb::test::sourceDir() + "/scenes/default.json -o " + out.string() +
-                " --size 48x27 --backend gl --stats --dump-shader " + shader.string());
+    ProcessResult r = run(std::string("render ") + sdfwb::test::sourceDir() + "/scenes/default.json -o " +
+                          out.string() + " --size 48x27 --backend gl --stats --dump-shader " + shader.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
     EXPECT_TRUE(fs::exists(out));

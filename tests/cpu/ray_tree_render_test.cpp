@@ -48,8 +48,8 @@ TEST(RayTreeRender, AMirrorFloorShowsTheBackgroundTimesKpsMps) {
 // the images are bit-identical to the tracer's without the tree.
 TEST(RayTreeRender, OpaqueScenesRenderBitIdenticallyThroughTheTree) {
     for (const char* file : {"/scenes/default.json", "/scenes/tutorial/06_ambient_occlusion.json"}) {
-        program::Program p =
-            program::compileScene(scene::loadSceneFile(sdfwb::test::sourceDir() + file), {.width = 64, .height = 36, .aa = 2});
+        program::Program p = program::compileScene(scene::loadSceneFile(sdfwb::test::sourceDir() + file),
+                                                   {.width = 64, .height = 36, .aa = 2});
         ASSERT_FALSE(p.secondaryRays) << file;
         program::Program tree = p;
         tree.secondaryRays = true;

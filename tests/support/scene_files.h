@@ -15,7 +15,9 @@ namespace sdfwb::test {
 struct SceneFile {
     std::string relative;  // e.g. "hard/thin_blade.json"
 
-    std::filesystem::path path() const { return std::filesystem::path(sdfwb::test::sourceDir() + "/scenes") / relative; }
+    std::filesystem::path path() const {
+        return std::filesystem::path(sdfwb::test::sourceDir() + "/scenes") / relative;
+    }
     // scenes/hard/intended/ holds the intended results of hard cases (parity::intendedSceneFile), ordinary scenes
     bool isHardCase() const { return relative.rfind("hard/", 0) == 0 && relative.rfind("hard/intended/", 0) != 0; }
     // A gtest-safe name: "hard_thin_blade".

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
-#include "ui/editor.h"
 #include "support/source_tree.h"
+#include "ui/editor.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -13,9 +13,7 @@ namespace {
 using scene::Node;
 using scene::NodeKind;
 
-scene::Scene defaultScene() {
-    return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json");
-}
+scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
 
 const NodePath kBall = {0, 0};  // root.children[0].children[0]: the sphere "ball"
 

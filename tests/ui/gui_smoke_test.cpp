@@ -13,9 +13,9 @@
 
 #include "image/image_io.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "ui/gui_run.h"
 #include "ui/node_path.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {

@@ -5,16 +5,15 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "support/still_script_host.h"
 #include "ui/script.h"
 #include "ui/view_picking.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
 
 scene::Scene defaultScene() { return scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json"); }
-
 
 ScriptStatus run(Editor& editor, const std::string& text, std::string* error = nullptr) {
     UiState ui;

@@ -11,10 +11,10 @@
 
 #include "io/atomic_file.h"
 #include "support/headless_imgui.h"
+#include "support/source_tree.h"
 #include "ui/long_text.h"
 #include "ui/panel_widgets.h"
 #include "ui/polynomial_panel.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {

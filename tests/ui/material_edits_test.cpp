@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
-#include "ui/material_edits.h"
 #include "support/source_tree.h"
+#include "ui/material_edits.h"
 
 namespace sdfwb::ui {
 namespace {

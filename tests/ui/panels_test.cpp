@@ -8,8 +8,8 @@
 
 #include "scene/scene_json.h"
 #include "support/headless_imgui.h"
-#include "ui/panels.h"
 #include "support/source_tree.h"
+#include "ui/panels.h"
 
 namespace sdfwb::ui {
 namespace {

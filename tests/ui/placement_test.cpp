@@ -12,9 +12,9 @@
 #include "program/compile_scene.h"
 #include "scene/camera_frame.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "ui/placement.h"
 #include "ui/view_camera.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {

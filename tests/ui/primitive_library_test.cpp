@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "ui/primitive_library.h"
 #include "support/source_tree.h"
+#include "ui/primitive_library.h"
 
 namespace sdfwb::ui {
 namespace {

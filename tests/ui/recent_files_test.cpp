@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "ui/user_paths.h"
 #include "support/source_tree.h"
+#include "ui/user_paths.h"
 
 namespace sdfwb::ui {
 namespace {

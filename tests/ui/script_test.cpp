@@ -6,9 +6,9 @@
 #include <chrono>
 
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "ui/script.h"
 #include "ui/view_camera.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {

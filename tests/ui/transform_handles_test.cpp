@@ -8,11 +8,11 @@
 
 #include "program/rotation.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "support/still_script_host.h"
 #include "ui/script.h"
 #include "ui/transform_handles.h"
 #include "ui/view_picking.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {

@@ -10,9 +10,9 @@
 
 #include "scene/camera_frame.h"
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "ui/editor.h"
 #include "ui/view_camera.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
+#include "support/source_tree.h"
 #include "ui/script.h"
 #include "ui/view_picking.h"
-#include "support/source_tree.h"
 
 namespace sdfwb::ui {
 namespace {
