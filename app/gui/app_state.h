@@ -76,7 +76,7 @@ struct AppState {
     SnapshotExport snapshot;
     FileState files;
     ViewRequest view;
-    PixelReadout readout;  // the viewport's pixel under the cursor
+    ViewPicks picks;  // the viewport's readout and click picks
     ui::HandleDrag handleDrag;     // a move, rotate or scale handle held in the viewport
     bool pressTookHandle = false;
     bool showShortcuts = false;    // Help > Keyboard shortcuts  // the last press in the viewport was on a handle (not a click to select)

@@ -5,7 +5,6 @@
 #include <glm/geometric.hpp>
 
 #include "app/gui/app_state.h"
-#include "ui/node_path.h"
 #include "ui/transform_handles.h"
 #include "ui/view_picking.h"
 
@@ -78,33 +77,33 @@ void outline(const AppState& app, ImVec2 corner, ImVec2 size) {
     draw->PopClipRect();
 }
 
+// Asks for the pixel under the cursor and shows the newest reading: dimmed
+// while it is of another scene state or view size than the one drawn.
 void readout(AppState& app, ImVec2 corner, ImVec2 size) {
-    ImVec2 mouse = ImGui::GetIO().MousePos;
-    PixelReadout& r = app.readout;
-    if (mouse.x != r.mouse.x || mouse.y != r.mouse.y || r.revision != app.editor.revision()) {
-        ImVec2 pixel = imagePixel(app, corner, size, mouse);
-        r.pick = ui::pickView(app.editor.scene(), app.view.width, app.view.height, pixel.x, pixel.y);
-        r.mouse = mouse;
-        r.revision = app.editor.revision();
-    }
-    if (!r.pick) return;
-    const cpu::PickResult& p = *r.pick;
-    std::string text = "steps " + std::to_string(p.steps) + "   ";
-    if (!p.hit) {
-        text += "no hit";
-    } else {
-        char numbers[96];
-        std::snprintf(numbers, sizeof numbers, "distance %.4g at (%.3f, %.3f, %.3f)   ", p.distance, p.position.x,
-                      p.position.y, p.position.z);
-        text += numbers;
-        text += p.ground ? std::string("ground") : p.node ? ui::formatNodePath(*p.node) : std::string("?");
-    }
+    ImVec2 pixel = imagePixel(app, corner, size, ImGui::GetIO().MousePos);
+    app.picks.readout.request(app.editor.scene(), app.editor.revision(), app.view.width, app.view.height, pixel.x,
+                              pixel.y);
+    std::optional<ui::PixelReading> reading = app.picks.readout.latest();
+    if (!reading) return;
+    bool current = reading->revision == app.editor.revision() && reading->width == app.view.width &&
+                   reading->height == app.view.height;
+    std::string text = ui::readoutText(reading->pick);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     ImVec2 at(corner.x + 8, corner.y + size.y - ImGui::GetTextLineHeight() - 8);
     ImVec2 extent = ImGui::CalcTextSize(text.c_str());
     draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3),
                         IM_COL32(20, 22, 26, 190), 3);
-    draw->AddText(at, IM_COL32(230, 232, 236, 255), text.c_str());
+    draw->AddText(at, current ? IM_COL32(230, 232, 236, 255) : IM_COL32(150, 152, 156, 255), text.c_str());
+}
+
+// A click's pick selects once ready, unless the scene changed meanwhile.
+void applyClick(AppState& app) {
+    if (!app.picks.clickPending || app.picks.click.pending()) return;
+    app.picks.clickPending = false;
+    std::optional<ui::PixelReading> reading = app.picks.click.latest();
+    if (!reading || reading->revision != app.editor.revision()) return;
+    ui::selectPicked(app.editor, reading->pick);
+    app.ui.showTab = ui::InspectorTab::Node;
 }
 
 }  // namespace
@@ -120,10 +119,12 @@ void viewSelection(AppState& app, ImVec2 corner, ImVec2 size) {
         ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
         if (std::hypot(drag.x, drag.y) < kClickSlop) {
             ImVec2 pixel = imagePixel(app, corner, size, ImGui::GetIO().MousePos);
-            ui::selectPicked(app.editor, ui::pickView(app.editor.scene(), app.view.width, app.view.height, pixel.x, pixel.y));
-            app.ui.showTab = ui::InspectorTab::Node;
+            app.picks.click.request(app.editor.scene(), app.editor.revision(), app.view.width, app.view.height,
+                                    pixel.x, pixel.y);
+            app.picks.clickPending = true;
         }
     }
+    applyClick(app);
     outline(app, corner, size);
     handles(app, corner, size);
     if (app.ui.pixelReadout && ImGui::IsItemHovered() && !ImGui::IsItemActive()) readout(app, corner, size);
