@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 #include <string>
 
 #include <imgui.h>
@@ -101,30 +103,43 @@ void toolbar(AppState& app) {
     if (ImGui::Button("Snapshot...")) app.snapshot.dialogOpen = true;
 }
 
-// A child of the viewport window, so it stays above the image however focus moves.
+std::string formatted(const char* format, auto... values) {
+    char line[256];
+    std::snprintf(line, sizeof line, format, values...);
+    return line;
+}
+
+// A child of the viewport window, so it stays above the image however focus
+// moves; sized to its lines as they are measured, so none is cut off.
 void statsOverlay(AppState& app, ImVec2 corner) {
     const Viewport& viewport = *app.viewport;
     const ViewportStats& s = viewport.stats();
-    constexpr int kLines = 6;
-    const ImGuiStyle& style = ImGui::GetStyle();
-    ImVec2 size(ImGui::GetFontSize() * 24,
-                kLines * ImGui::GetTextLineHeightWithSpacing() + 2 * style.WindowPadding.y - style.ItemSpacing.y);
-    ImGui::SetCursorScreenPos(ImVec2(corner.x + 8, corner.y + 8));
-    ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(20, 22, 26, 160));
-    ImGui::BeginChild("stats", size, false, ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar);
     // the compare views show both images, and these figures are the GLSL side's
     bool comparing = app.ui.compare != ui::CompareMode::Off;
     const char* backend = comparing ? "GLSL figures, CPU compared" : app.ui.backend == ui::ViewBackend::Gl ? "GLSL" : "CPU";
-    ImGui::Text("frame %.0f ms (slowest %.0f)   backend %s", app.frameSeconds * 1000.0f,
-                app.slowestFrameSeconds * 1000.0f, backend);
-    ImGui::Text("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa, s.renderSeconds * 1000.0,
-                s.gpuSeconds * 1000.0);
-    ImGui::Text("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
-                s.frame.hitRatio * 100.0);
-    ImGui::Text("field evaluations/pixel mean %.1f (march, normals, AO, shadows)", s.frame.meanEvaluations);
-    ImGui::Text("GL %s", viewport.glInfo().renderer.c_str());
-    ImGui::Text("shaders built %d, last %.2f s", s.compiles, s.compileSeconds);
-    ImGui::Text("%s", s.status.c_str());
+    const std::string lines[] = {
+        formatted("frame %.0f ms (slowest %.0f)   backend %s", app.frameSeconds * 1000.0f,
+                  app.slowestFrameSeconds * 1000.0f, backend),
+        formatted("image %d x %d, AA %d, %.0f ms (GPU %.0f ms)", s.width, s.height, s.aa, s.renderSeconds * 1000.0,
+                  s.gpuSeconds * 1000.0),
+        formatted("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
+                  s.frame.hitRatio * 100.0),
+        formatted("field evaluations/pixel mean %.1f (march, normals, AO, shadows)", s.frame.meanEvaluations),
+        "GL " + viewport.glInfo().renderer,
+        formatted("shaders built %d, last %.2f s", s.compiles, s.compileSeconds),
+        s.status,
+    };
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float widest = 0;
+    for (const std::string& line : lines) widest = std::max(widest, ImGui::CalcTextSize(line.c_str()).x);
+    const float count = static_cast<float>(std::size(lines));
+    ImVec2 size(widest + 2 * style.WindowPadding.x,
+                count * ImGui::GetTextLineHeightWithSpacing() + 2 * style.WindowPadding.y - style.ItemSpacing.y);
+    ImGui::SetCursorScreenPos(ImVec2(corner.x + 8, corner.y + 8));
+    ImGui::PushStyleColor(ImGuiCol_ChildBg, IM_COL32(20, 22, 26, 160));
+    ImGui::BeginChild("stats", size, false,
+                      ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_AlwaysUseWindowPadding);
+    for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
     ImGui::EndChild();
     ImGui::PopStyleColor();
 }
