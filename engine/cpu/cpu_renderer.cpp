@@ -112,9 +112,9 @@ double evaluateDistance(const program::Program& program, const glm::dvec3& march
         return static_cast<double>(kernel.map(scratch, typename K::Vec3(marchPoint)).d);
     };
     if (precision == render::Precision::Double) {
-        return evaluate(f64::Kernel(program));
+        return evaluate(f64::Kernel(program, f64::FieldSource::Whole));
     }
-    return evaluate(f32::Kernel(program));
+    return evaluate(f32::Kernel(program, f32::FieldSource::Whole));
 }
 
 }  // namespace sdfwb::cpu

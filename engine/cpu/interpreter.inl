@@ -150,6 +150,12 @@ struct SampleDriver {
 #include "sdf/glsl/sample_driver.glsl"
 };
 
+// Where a kernel's field comes from. Both give the same floats (a pruned leaf
+// equals the whole program in its cell); a grid costs seconds to build on a
+// large scene and pays back only over many rays, so single rays and point
+// queries (picking, placement, the readout, on the UI thread) take the whole.
+enum class FieldSource { Pruned, Whole };
+
 // The scene's constants converted to this precision once per render.
 struct Kernel {
     using Real = real;
@@ -160,7 +166,8 @@ struct Kernel {
     std::shared_ptr<const prune::PruneGrid> grid;
     std::vector<vec4> params;  // the program's, then the grid's
 
-    explicit Kernel(const program::Program& p) : program(p), grid(prune::pruneGridFor(p)) {
+    explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
+        : program(p), grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }

@@ -93,7 +93,7 @@ std::optional<std::vector<int>> pathOfShape(const scene::Scene& scene, const pro
 
 // Central differences at a march point, steps scaled with its distance from the eye.
 glm::dvec3 gradientAt(const program::Program& program, const glm::dvec3& march) {
-    f64::Kernel kernel(program);
+    f64::Kernel kernel(program, f64::FieldSource::Whole);
     f64::Scratch scratch(program);
     const double h = 1e-4 * (1.0 + std::sqrt(march.x * march.x + march.y * march.y + march.z * march.z));
     glm::dvec3 gradient(0.0);
@@ -125,13 +125,13 @@ glm::dvec3 fieldNormal(const scene::Scene& scene, const program::Program& progra
 
 std::optional<std::vector<int>> primitiveAt(const scene::Scene& scene, const program::Program& program,
                                             const glm::dvec3& world) {
-    f32::Kernel kernel(program);
+    f32::Kernel kernel(program, f32::FieldSource::Whole);
     glm::dvec3 march = world - scene::cameraFrame(scene.camera).eye;
     return pathOfShape(scene, program, decidingShape(program, kernel, f32::vec3(march)));
 }
 
 PickResult pickPixel(const scene::Scene& scene, const program::Program& program, double x, double y) {
-    f32::Kernel kernel(program);
+    f32::Kernel kernel(program, f32::FieldSource::Whole);
     f32::Scratch scratch(program);
     // the tracer's pixel coordinates count rows from the bottom, as gl_FragCoord
     float px = static_cast<float>(x), py = static_cast<float>(program.height - y);

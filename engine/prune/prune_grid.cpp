@@ -233,7 +233,11 @@ std::uint64_t gridKey(const program::Program& program) {
     return hash;
 }
 
+std::atomic<long> gridsBuilt{0};
+
 }  // namespace
+
+long pruneGridsBuilt() { return gridsBuilt.load(); }
 
 std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program) {
     // progressive and tiled renders of one program ask for its grid many times
@@ -248,6 +252,7 @@ std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program) {
         }
     }
     std::shared_ptr<const PruneGrid> grid = buildPruneGrid(program);
+    ++gridsBuilt;
     std::lock_guard lock(mutex);
     cache.emplace_front(key, grid);
     if (cache.size() > kCached) cache.pop_back();

@@ -47,6 +47,10 @@ struct PruneGrid {
 // Grids are cached by the program's instructions and parameters.
 std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program);
 
+// How many grids pruneGridFor has built in this process (its cache misses):
+// the picker's tests check that a pick builds none.
+long pruneGridsBuilt();
+
 // Smaller programs are evaluated whole: a grid would cost more to build than
 // it saves, and the GL backend (no pruning yet) renders them as they are.
 inline constexpr int kMinPrunedInstructions = 128;

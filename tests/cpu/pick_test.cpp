@@ -3,6 +3,8 @@
 // there is named by its node path: through transforms, booleans and smooth
 // blends, for every shipped scene.
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -13,6 +15,8 @@
 #include "program/compile_scene.h"
 #include "scene/camera_frame.h"
 #include "scene/scene_json.h"
+#include "prune/prune_grid.h"
+#include "support/large_scenes.h"
 #include "support/scene_files.h"
 #include "support/source_tree.h"
 
@@ -112,6 +116,32 @@ TEST_P(PickEveryScene, FollowsTheRenderersRayAndNamesAPrimitive) {
                 EXPECT_NE(std::find(primitives.begin(), primitives.end(), *pick.node), primitives.end());
             }
         }
+    }
+}
+
+// A pick runs on the UI thread: it evaluates the whole program (the same
+// floats as the pruned leaves) instead of building a grid, which takes
+// seconds on a large scene.
+TEST(Pick, LargeScenesPickWithoutBuildingAGrid) {
+    scene::Scene scene = test::moleculeScene("molecule_100");
+    program::Program program = program::compileScene(scene, {.width = 48, .height = 27, .aa = 1});
+    long before = prune::pruneGridsBuilt();
+    std::vector<cpu::PickResult> picks;
+    for (int i = 0; i < program.width * program.height; ++i) {
+        picks.push_back(cpu::pickPixel(scene, program, i % program.width + 0.5, i / program.width + 0.5));
+    }
+    auto hit = std::find_if(picks.begin(), picks.end(), [](const cpu::PickResult& p) { return p.hit; });
+    ASSERT_NE(hit, picks.end());
+    cpu::fieldDistance(scene, program, hit->position);
+    cpu::fieldNormal(scene, program, hit->position);
+    cpu::primitiveAt(scene, program, hit->position);
+    EXPECT_EQ(prune::pruneGridsBuilt(), before);
+    // and the picks see what the pruned render shows
+    ASSERT_TRUE(prune::pruneGridFor(program));
+    image::Frame frame = cpu::renderCpu(program).frame;
+    for (size_t i = 0; i < picks.size(); ++i) {
+        ASSERT_EQ(picks[i].hit, frame.coverage[i] > 0) << "pixel " << i;
+        if (picks[i].hit) EXPECT_EQ(static_cast<float>(picks[i].t), frame.depth[i]) << "pixel " << i;
     }
 }
 
