@@ -1,5 +1,6 @@
 #include "app/gui/glfw_context.h"
 
+#include "app/gui/gl_debug_log.h"
 #include "glcontext/gl_functions.h"
 #define GLFW_INCLUDE_NONE  // GL/gl.h would hide glcorearb.h's GL 1.x typedefs
 #include <GLFW/glfw3.h>
@@ -15,6 +16,7 @@ std::unique_ptr<GlfwContext> GlfwContext::forWindow(GLFWwindow* window) {
         [](const char* name) { return reinterpret_cast<glcontext::GlProc>(glfwGetProcAddress(name)); });
     glcontext::GlContextInfo info = glcontext::queryContextInfo(gl);
     glcontext::requireVersion(info, 3, 3);
+    logGlDebugErrors();
     return std::unique_ptr<GlfwContext>(new GlfwContext(window, false, gl, info));
 }
 
@@ -23,7 +25,11 @@ GlfwContext::~GlfwContext() {
     if (ownsWindow_) glfwDestroyWindow(window_);
 }
 
-void GlfwContext::makeCurrent() { glfwMakeContextCurrent(window_); }
+void GlfwContext::makeCurrent() {
+    glfwMakeContextCurrent(window_);
+    if (!debugLogged_) logGlDebugErrors();  // a worker's context: once, on its thread
+    debugLogged_ = true;
+}
 
 void GlfwContext::releaseCurrent() {
     if (glfwGetCurrentContext() == window_) glfwMakeContextCurrent(nullptr);

@@ -33,6 +33,7 @@ private:
     bool ownsWindow_;
     glcontext::GlFunctions gl_;
     glcontext::GlContextInfo info_;
+    bool debugLogged_ = false;  // gl_debug_log.h installed for this context
 };
 
 }  // namespace sdfwb::app::gui

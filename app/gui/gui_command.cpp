@@ -15,6 +15,7 @@
 
 #include "app/gui/app_state.h"
 #include "app/gui/file_actions.h"
+#include "app/gui/gl_debug_log.h"
 #include "app/gui/key_gate.h"
 #include "app/gui/main_window.h"
 #include "app/gui/window_capture.h"
@@ -165,6 +166,7 @@ void runFrame(AppState& app, Host& host) {
     }
     autosaveTick(app, start);
     noteViewportError(app);
+    for (const std::string& error : takeGlDebugErrors()) app.ui.error("GL: " + error);
     if (app.scripted) printNewMessages(app);
     glfwSetWindowTitle(app.window, windowTitle(app).c_str());
     ImGui::Render();

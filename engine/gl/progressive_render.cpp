@@ -49,6 +49,10 @@ std::vector<render::TileRect> GlProgressiveRender::draw(const std::function<bool
     if (done() || !another()) return finished;
     const auto start = std::chrono::steady_clock::now();
     const int aa = program_.aa;
+    // Errors still pending were raised by earlier calls of whoever shares the
+    // context (the GUI's, which its KHR_debug log names); this draw fails
+    // only for its own.
+    glcontext::takeGlErrors(gl_);
     renderer_.bindForDrawing(program_);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, targets_.framebuffer.get());
     gl_.Viewport(0, 0, program_.width, program_.height);

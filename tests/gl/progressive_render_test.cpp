@@ -8,6 +8,7 @@
 #include "gl/program_builder.h"
 #include "gl/progressive_render.h"
 #include "gl_test_support.h"
+#include "glcontext/gl_debug.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
 #include "support/source_tree.h"
@@ -38,6 +39,18 @@ TEST_F(ProgressiveRenderTest, ManySmallStepsGiveTheFrameOfOneRender) {
     EXPECT_EQ(progressive.frame().color.rgb, whole.frame.color.rgb);
     EXPECT_EQ(progressive.frame().steps, whole.frame.steps);
     EXPECT_EQ(progressive.frame().coverage, whole.frame.coverage);
+}
+
+// A GL error an earlier call left pending (the GUI's, sharing the context)
+// is not this render's: it used to fail the viewport's GLSL render after the
+// next edit, blamed on "GlProgressiveRender::draw".
+TEST_F(ProgressiveRenderTest, AnErrorLeftByAnEarlierCallDoesNotFailTheDraw) {
+    gl::GlRenderer renderer(gl());
+    program::Program p = smallDefault(1);
+    gl::GlProgressiveRender progressive(renderer, p, 64);
+    gl().Enable(0x7FFF);  // no such capability: GL_INVALID_ENUM
+    EXPECT_NO_THROW(progressive.advance(0.0));
+    EXPECT_EQ(glcontext::takeGlErrors(gl()), "");
 }
 
 TEST_F(ProgressiveRenderTest, WorkerBuiltProgramIsAdoptedWithoutACompile) {
