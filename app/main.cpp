@@ -12,6 +12,7 @@
 #include "app/formula_arguments.h"
 #include "app/compare_command.h"
 #include "app/gui/gui_command.h"
+#include "app/mesh_command.h"
 #include "app/parity_command.h"
 #include "app/render_command.h"
 #include "app/tradeoff_command.h"
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
     CLI::App* compare = sdfwb::app::addCompareCommand(app, compareArguments);
     sdfwb::app::ParityArguments parityArguments;
     CLI::App* parity = sdfwb::app::addParityCommand(app, parityArguments);
+    sdfwb::app::MeshArguments meshArguments;
+    CLI::App* mesh = sdfwb::app::addMeshCommand(app, meshArguments);
     sdfwb::app::gui::GuiArguments guiArguments;
     CLI::App* gui = sdfwb::app::gui::addGuiCommand(app, guiArguments);
     sdfwb::app::ImplicitizeArguments implicitizeArguments;
@@ -79,6 +82,9 @@ int main(int argc, char** argv) {
     if (gui->parsed()) {
         int code = sdfwb::app::gui::runGui(guiArguments);
         return code == sdfwb::app::gui::kNoWindow ? sdfwb::app::kExitError : code;
+    }
+    if (mesh->parsed()) {
+        return sdfwb::app::runMesh(meshArguments);
     }
     if (render->parsed()) {
         return sdfwb::app::runRender(renderArguments);

@@ -27,13 +27,14 @@ int PickPrograms::compiles() const {
 void PixelProbe::request(const scene::Scene& scene, std::uint64_t revision, int width, int height, double x, double y) {
     Requested next{revision, std::max(width, 1), std::max(height, 1), x, y};
     if (requested_ == next) return;
-    if (!scene_ || !requested_ || requested_->revision != revision) scene_ = std::make_shared<const scene::Scene>(scene);
+    if (!scene_ || !requested_ || requested_->revision != revision)
+        scene_ = std::make_shared<const scene::Scene>(scene);
     requested_ = next;
     if (job_ && !job_->started()) job_->cancel();  // superseded before it ran
     job_ = queue_.submit([shared = shared_, programs = programs_, scene = scene_, next](jobs::Job&) {
         std::shared_ptr<const program::Program> program = programs->get(*scene, next.revision, next.width, next.height);
-        PixelReading reading{next.revision, next.width, next.height, next.x, next.y,
-                             cpu::pickPixel(*scene, *program, next.x, next.y)};
+        PixelReading reading{next.revision, next.width, next.height,
+                             next.x,        next.y,     cpu::pickPixel(*scene, *program, next.x, next.y)};
         std::lock_guard lock(shared->mutex);
         shared->latest = std::move(reading);
     });

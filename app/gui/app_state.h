@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/gui/glfw_context.h"
+#include "app/gui/mesh_export.h"
 #include "app/gui/snapshot_export.h"
 #include "app/gui/thumbnails.h"
 #include "app/gui/view_selection.h"
@@ -74,6 +75,7 @@ struct AppState {
     std::unique_ptr<Viewport> viewport;
     std::unique_ptr<Thumbnails> thumbnails;
     SnapshotExport snapshot;
+    MeshExport meshExport;  // File > Export mesh
     FileState files;
     ViewRequest view;
     ViewPicks picks;  // the viewport's readout and click picks

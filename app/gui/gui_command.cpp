@@ -56,7 +56,8 @@ class Host final : public ui::ScriptHost {
 public:
     explicit Host(AppState& app) : app_(app) {}
     bool idle() const override {
-        return app_.viewport->idle() && (!app_.ui.showThumbnails || app_.thumbnails->idle()) && !app_.snapshot.running();
+        return app_.viewport->idle() && (!app_.ui.showThumbnails || app_.thumbnails->idle()) && !app_.snapshot.running() &&
+               !app_.meshExport.running();
     }
     std::string requestScreenshot(const std::filesystem::path& path) override {
         app_.screenshot = path;
@@ -161,8 +162,8 @@ void runFrame(AppState& app, Host& host) {
                          app.view.interacting, app.view.interacting ? 0.020 : 0.025);
     app.thumbnails->update(app.view.interacting || app.ui.draggingNode);
     app.snapshot.poll();
-    if (std::string outcome = app.snapshot.takeOutcome(); !outcome.empty()) {
-        (outcome.starts_with("wrote") ? app.ui.info(outcome) : app.ui.error(outcome));
+    for (std::string outcome : {app.snapshot.takeOutcome(), app.meshExport.takeOutcome()}) {
+        if (!outcome.empty()) (outcome.starts_with("wrote") ? app.ui.info(outcome) : app.ui.error(outcome));
     }
     autosaveTick(app, start);
     noteViewportError(app);

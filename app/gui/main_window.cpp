@@ -193,6 +193,7 @@ void menuBar(AppState& app) {
         if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) openDialog(app, FileDialogState::Purpose::SaveAs);
         ImGui::Separator();
         if (ImGui::MenuItem("Export snapshot...", "Ctrl+E")) app.snapshot.dialogOpen = true;
+        if (ImGui::MenuItem("Export mesh...")) app.meshExport.dialogOpen = true;
         if (ImGui::MenuItem("Save window as PNG", "F12")) saveWindowPicture(app);
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) request(app, {PendingAction::Kind::Quit, {}});
@@ -408,6 +409,35 @@ void snapshotDialog(AppState& app) {
     ImGui::EndPopup();
 }
 
+void meshExportDialog(AppState& app) {
+    MeshExport& exporter = app.meshExport;
+    if (exporter.dialogOpen && !ImGui::IsPopupOpen("Export mesh")) ImGui::OpenPopup("Export mesh");
+    if (!ImGui::BeginPopupModal("Export mesh", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    MeshExportSettings& s = exporter.settings;
+    ImGui::BeginDisabled(exporter.running());
+    ImGui::SetNextItemWidth(360);
+    ImGui::InputText("file (.stl, .obj or .ply)", &s.path);
+    ImGui::SetNextItemWidth(200);
+    ImGui::SliderInt("resolution", &s.resolution, mesh::kMinResolution, mesh::kMaxResolution);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("Voxels along the longest side of the scene's bounds; the ground is left out");
+    }
+    ImGui::EndDisabled();
+    s.resolution = std::clamp(s.resolution, mesh::kMinResolution, mesh::kMaxResolution);
+    if (exporter.running()) {
+        ImGui::ProgressBar(static_cast<float>(exporter.progress()), ImVec2(360, 0));
+        if (ImGui::Button("Cancel")) exporter.cancel();
+    } else {
+        if (ImGui::Button("Export")) exporter.start(app.editor.scene(), s);
+        ImGui::SameLine();
+        if (ImGui::Button("Close")) {
+            exporter.dialogOpen = false;
+            ImGui::CloseCurrentPopup();
+        }
+    }
+    ImGui::EndPopup();
+}
+
 }  // namespace
 
 void saveWindowPicture(AppState& app) {
@@ -460,6 +490,7 @@ void drawMainWindow(AppState& app) {
     ui::drawProblemsWindow(app.editor, app.ui);
     shortcutsWindow(app);
     snapshotDialog(app);
+    meshExportDialog(app);
     drawFileDialogs(app);
 }
 

@@ -37,6 +37,27 @@ TEST_F(Cli, RenderWritesTheImageWithMetadataAndPrintsItsPath) {
     EXPECT_EQ(filesInFolder(), 1u);
 }
 
+// Mesh export (issue 13): the file is written, bad arguments fail before any
+// work with one line, and nothing is left behind.
+TEST_F(Cli, MeshWritesTheSurfaceAndRefusesBadArgumentsFirst) {
+    fs::path out = path("scene.ply");
+    ProcessResult r = run("mesh " + sdfwb::test::sourceDir() + "/scenes/default.json -o " + out.string() +
+                          " --resolution 32");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("triangles"), std::string::npos) << r.output;
+    EXPECT_GT(fs::file_size(out), 1000u);
+    r = run("mesh -o " + path("x.stl").string() + " --resolution 5000");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.output, "sdf-workbench mesh: resolution must be 8 to 512 (got 5000)\n");
+    r = run("mesh -o " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("unsupported mesh format \".png\" (use .stl, .obj or .ply)"), std::string::npos);
+    r = run("mesh " + sdfwb::test::sourceDir() + "/scenes/primitives/plane.json -o " + path("p.obj").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("no bounded surface"), std::string::npos) << r.output;
+    EXPECT_EQ(filesInFolder(), 1u);  // the first mesh only
+}
+
 TEST_F(Cli, RenderWithoutASceneUsesTheBuiltInDefaultFromAnyFolder) {
     fs::path out = path("builtin.exr");
     ProcessResult r = run("render -o " + out.string() + " --size 32x18 --aa 1");
