@@ -112,14 +112,17 @@ public:
     // are reduced here, in double, modulo the pattern's period (two cells, a
     // checker's), so the float sum stays small wherever the scene sits (at
     // 1e5 a float ulp is 0.008 and grid lines came out fat and uneven).
-    int compileGround(const scene::Ground& ground, const dvec3& eye) {
+    // footprintPerDistance: the width one sample spans at distance 1, by
+    // which the shared code box-filters the pattern (material.glsl).
+    int compileGround(const scene::Ground& ground, const dvec3& eye, double footprintPerDistance) {
         int s = allocSample();
         dvec3 patternEye = eye;
         if (ground.cellSize > 0) {
             patternEye.x = reduceModulo(eye.x, 2.0 * ground.cellSize);
             patternEye.z = reduceModulo(eye.z, 2.0 * ground.cellSize);
         }
-        int param = addParams({dvec4(ground.height - eye.y, static_cast<double>(ground.pattern), 0, 0),
+        double pattern = static_cast<double>(ground.pattern);
+        int param = addParams({dvec4(ground.height - eye.y, pattern, footprintPerDistance, 0),
                                dvec4(patternEye, ground.cellSize), dvec4(ground.secondColor, ground.lineWidth)});
         emit({Opcode::Ground, s, 0, -1, param, materialSlot(ground.material), 0});
         return s;
@@ -486,9 +489,15 @@ FormulaCode compileFormula(const std::string& source, bool withGradient) {
 Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     Compiler compiler(scene);
     scene::CameraFrame frame = scene::cameraFrame(scene.camera);
+    const scene::RenderSettings& r = scene.render;
+    int width = options.width > 0 ? options.width : r.width;
+    int height = options.height > 0 ? options.height : r.height;
+    int aa = options.aa > 0 ? options.aa : r.aa;
+    // at distance t one sub-sample spans t * 2 tan(fov/2) / (height * aa)
+    double footprintPerDistance = 2.0 * frame.tanHalfFov / (height * aa);
     int result = compiler.compile(scene.root, 0, frame.eye);
     if (scene.environment.ground.enabled) {
-        int ground = compiler.compileGround(scene.environment.ground, frame.eye);
+        int ground = compiler.compileGround(scene.environment.ground, frame.eye, footprintPerDistance);
         compiler.combine(Opcode::Union, result, ground, -1, 0);
     }
     Program program = std::move(compiler.program());
@@ -501,19 +510,18 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     }
     program.prune = options.prune;
 
-    const scene::RenderSettings& r = scene.render;
-    program.width = options.width > 0 ? options.width : r.width;
-    program.height = options.height > 0 ? options.height : r.height;
-    program.aa = options.aa > 0 ? options.aa : r.aa;
+    program.width = width;
+    program.height = height;
+    program.aa = aa;
     program.camera = {dvec3(0.0), frame.forward, frame.right, frame.up, frame.tanHalfFov};
 
     TraceParams& t = program.trace;
     t.maxSteps = r.maxSteps;
     t.maxDistance = r.maxDistance;
     if (r.epsilonMode == scene::EpsilonMode::Pixel) {
-        // r.epsilon sub-sample footprints: at distance t one sub-sample spans
-        // t * 2 tan(fov/2) / (height * aa), so higher AA also resolves finer detail
-        // instead of averaging silhouettes dilated by a whole pixel's epsilon
+        // r.epsilon sub-sample footprints (footprintPerDistance above, written
+        // out so the bits stay as they were), so higher AA also resolves finer
+        // detail instead of averaging silhouettes dilated by a whole pixel's epsilon
         t.epsilon = 0.0;
         t.epsilonPerDistance = r.epsilon * 2.0 * frame.tanHalfFov / (program.height * program.aa);
     } else {

@@ -1,6 +1,7 @@
 // Rendering benchmarks: CPU thread scaling on the default scene, GL shader
 // compile time against scene size (cold Mesa cache), GL against CPU time, the
-// cost of the ray tree (mirrors and glass) against the same scenes without it.
+// cost of the ray tree (mirrors and glass) against the same scenes without it,
+// the cost of the ground's footprint filter against the point pattern.
 // Run: build/tests/bench/render_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
 
 #include <cstdlib>
@@ -93,6 +94,29 @@ BENCHMARK_CAPTURE(rayTreeCost, glass_cpu, "tutorial/09_glass.json", false)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK_CAPTURE(rayTreeCost, glass_gl, "tutorial/09_glass.json", true)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// What the ground's footprint filter costs: scenes/default.json at 480x270
+// AA 1 as compiled (range 1) and with the ground's footprint per distance set
+// to 0 (range 0: every sample takes the point pattern), CPU (2 threads) and GL.
+void groundFilterCost(benchmark::State& state, bool gl) {
+    program::Program p = program::compileScene(defaultScene(), {.width = 480, .height = 270, .aa = 1});
+    if (state.range(0) == 0) {
+        for (const program::Instruction& in : p.code) {
+            if (in.op == program::Opcode::Ground) p.params[static_cast<size_t>(in.param)].z = 0.0;
+        }
+    }
+    if (!gl) {
+        for (auto _ : state) benchmark::DoNotOptimize(cpu::renderCpu(p, {.threads = 2}));
+        return;
+    }
+    gl::GlRenderer renderer(context().gl());
+    renderer.prepare(p);
+    for (auto _ : state) benchmark::DoNotOptimize(renderer.render(p));
+}
+BENCHMARK_CAPTURE(groundFilterCost, cpu, false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(groundFilterCost, gl, true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 }  // namespace
 }  // namespace sdfwb

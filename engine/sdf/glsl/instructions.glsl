@@ -65,11 +65,23 @@ SHARED_FN Sample instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1, Material materia
     return shapeSample(max(box, v.x < real(0) ? -bound : bound), material);
 }
 
-// The ground plane y = height, in march coordinates: q0 = (height - eye.y, pattern),
-// q1 = (eye, cell size), q2 = (second colour, line width).
+// The ground plane y = height, in march coordinates: q0 = (height - eye.y,
+// pattern, footprint per distance), q1 = (eye, cell size), q2 = (second
+// colour, line width). March coordinates put the eye at 0, so p is also the
+// primary ray's direction times its distance: a sample's footprint, a disc
+// of diameter w = q0.z |p| across the ray, lands on the plane as an ellipse
+// whose extent along x is w sqrt(1 + (p.x / p.y)^2) (and along z likewise),
+// long towards the horizon. (A reflected ray's footprint is wider than its
+// distance from the eye gives: the ground seen in a mirror is filtered less.)
 SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
     real d = p.y - q0.x;
-    Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2));
+    real height = abs(p.y);
+    real w = q0.z * length3(p);
+    vec2 footprint = vec2(PATTERN_MAX_FOOTPRINT * q1.w);
+    if (height > real(0)) {
+        footprint = vec2(w * sqrt(p.y * p.y + p.x * p.x) / height, w * sqrt(p.y * p.y + p.z * p.z) / height);
+    }
+    Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2), footprint);
     return shapeSample(d, m);
 }
 

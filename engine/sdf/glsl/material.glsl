@@ -85,26 +85,81 @@ const int GROUND_PLAIN = 0;
 const int GROUND_CHECKER = 1;
 const int GROUND_GRID = 2;
 
-SHARED_FN Material groundMaterial(Material base, vec3 worldPoint, int pattern, real cellSize,
-                        real lineWidth, vec3 secondColor) {
+// Patterns are box-filtered over the footprint of the sample (lecture notes on
+// realism, 1.1: a texture seen from afar must be averaged over what a pixel
+// covers, or its cells alias into moire towards the horizon). Each pattern is
+// a product of two 1D patterns, and the box filter of a product of functions
+// of u and of v is the product of their filters, so each axis is filtered
+// exactly from its integral: (I(x + w/2) - I(x - w/2)) / w. Footprints
+// narrower than this (in cells) take the point sample, where the difference
+// of integrals would be float noise.
+const real PATTERN_MIN_FOOTPRINT = real(1e-4);
+// Wider footprints are clamped: the filtered value is then the pattern's mean
+// to within 1/1000, and the integrals' arguments stay small enough for float.
+const real PATTERN_MAX_FOOTPRINT = real(1000);
+
+// The checker's square wave s(x) = 1 on [0, 1), -1 on [1, 2), period 2, and
+// its integral from 0, a triangle wave.
+SHARED_FN real checkerWave(real x) { return modr(floor(x), real(2)) > real(0.5) ? real(-1) : real(1); }
+SHARED_FN real checkerWaveIntegral(real x) { return real(1) - abs(modr(x, real(2)) - real(1)); }
+SHARED_FN real filteredCheckerWave(real x, real w) {
+    if (!(w > PATTERN_MIN_FOOTPRINT)) {
+        return checkerWave(x);
+    }
+    real h = real(0.5) * min(w, PATTERN_MAX_FOOTPRINT);
+    return (checkerWaveIntegral(x + h) - checkerWaveIntegral(x - h)) / (real(2) * h);
+}
+
+// Grid lines: 1 within halfLine of an integer, else 0; its integral counts
+// 2 halfLine per whole period of y = x + halfLine plus the part of the
+// current one, min(fract(y), 2 halfLine).
+SHARED_FN real gridLine(real x, real halfLine) { return abs(x - roundHalfUp(x)) < halfLine ? real(1) : real(0); }
+SHARED_FN real gridLineIntegral(real x, real halfLine) {
+    real y = x + halfLine;
+    real whole = floor(y);
+    return whole * (real(2) * halfLine) + min(y - whole, real(2) * halfLine);
+}
+SHARED_FN real filteredGridLine(real x, real halfLine, real w) {
+    if (!(w > PATTERN_MIN_FOOTPRINT)) {
+        return gridLine(x, halfLine);
+    }
+    real h = real(0.5) * min(w, PATTERN_MAX_FOOTPRINT);
+    return saturate((gridLineIntegral(x + h, halfLine) - gridLineIntegral(x - h, halfLine)) / (real(2) * h));
+}
+
+// The share of the footprint (widths `footprint` in world units along x and
+// z, centred at worldPoint) that the pattern paints in secondColor.
+SHARED_FN real groundPatternCoverage(vec3 worldPoint, int pattern, real cellSize, real lineWidth, vec2 footprint) {
+    real u = worldPoint.x / cellSize;
+    real v = worldPoint.z / cellSize;
+    real wu = footprint.x / cellSize;
+    real wv = footprint.y / cellSize;
+    if (pattern == GROUND_CHECKER) {
+        // second on odd cells, where s(u) s(v) = -1
+        return real(0.5) - real(0.5) * filteredCheckerWave(u, wu) * filteredCheckerWave(v, wv);
+    }
+    real halfLine = real(0.5) * lineWidth / cellSize;
+    real onU = filteredGridLine(u, halfLine, wu);
+    real onV = filteredGridLine(v, halfLine, wv);
+    return real(1) - (real(1) - onU) * (real(1) - onV);
+}
+
+SHARED_FN Material groundMaterial(Material base, vec3 worldPoint, int pattern, real cellSize, real lineWidth,
+                                  vec3 secondColor, vec2 footprint) {
     if (pattern == GROUND_PLAIN || !(cellSize > real(0))) {
         return base;
     }
-    real u = worldPoint.x / cellSize;
-    real v = worldPoint.z / cellSize;
-    bool useSecond = false;
-    if (pattern == GROUND_CHECKER) {
-        useSecond = modr(floor(u) + floor(v), real(2)) > real(0.5);
+    real coverage = groundPatternCoverage(worldPoint, pattern, cellSize, lineWidth, footprint);
+    if (!(coverage > real(0))) {
+        return base;
+    }
+    Material m = base;
+    if (coverage >= real(1)) {
+        m.ambient = secondColor;
+        m.diffuse = secondColor;
     } else {
-        real halfLine = real(0.5) * lineWidth / cellSize;
-        real du = abs(u - roundHalfUp(u));
-        real dv = abs(v - roundHalfUp(v));
-        useSecond = du < halfLine || dv < halfLine;
+        m.ambient = lerp3s(base.ambient, secondColor, coverage);
+        m.diffuse = lerp3s(base.diffuse, secondColor, coverage);
     }
-    if (useSecond) {
-        return Material(secondColor, secondColor, base.specular, base.shininess, base.emission, base.emissionStrength,
-                        base.reflectivity, base.reflectionColor, base.transparency, base.transmissionColor, base.ior,
-                        base.fresnel);
-    }
-    return base;
+    return m;
 }
