@@ -15,8 +15,19 @@
 #include <glm/glm.hpp>
 
 #include "program/program.h"
+#include "sdf/shared.h"
 
 namespace sdfwb::prune {
+
+namespace lookup32 {
+using namespace sdfwb::sdf::f32;
+#include "prune/leaf_lookup.inl"
+}  // namespace lookup32
+
+namespace lookup64 {
+using namespace sdfwb::sdf::f64;
+#include "prune/leaf_lookup.inl"
+}  // namespace lookup64
 
 struct PruneLeaf {
     int offset;  // first instruction in PruneGrid::code
@@ -24,8 +35,8 @@ struct PruneLeaf {
     int result;  // sample register holding the field
 };
 
-inline constexpr int kSplit = 2;  // children per axis of a split cell
-inline constexpr int kMaxDepth = 5;  // splits below a root cell
+inline constexpr int kSplit = sdf::f64::PRUNE_SPLIT;  // children per axis of a split cell
+inline constexpr int kMaxDepth = sdf::f64::PRUNE_MAX_DEPTH;  // splits below a root cell
 
 struct PruneGrid {
     glm::dvec3 origin{0.0};     // march coordinates of the grid's minimum corner
@@ -40,6 +51,11 @@ struct PruneGrid {
     // Parameter slots the outside bound reads, numbered after Program::params.
     std::vector<glm::dvec4> extraParams;
     int longestLeaf = 0;  // instructions
+
+    // pruneLeafAt's arguments (sdf/glsl/prune_lookup.glsl): (origin, 1 / cellSize)
+    // and (dims, outsideLeaf), converted to the lookup's precision.
+    glm::dvec4 lookupFrame() const { return glm::dvec4(origin, 1.0 / cellSize); }
+    glm::dvec4 lookupDims() const { return glm::dvec4(glm::dvec3(dims), outsideLeaf); }
 };
 
 // The grid for `program`, or null when it has none: pruning is off
@@ -60,24 +76,16 @@ std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program,
                                                 int minInstructions = kMinPrunedInstructions);
 
 // The leaf whose instructions evaluate the field at march point p, computed in
-// the precision of p (the same float operations in every backend).
+// the precision of p by the shared lookup the GLSL backend runs.
 template <typename Vec3>
 int leafIndexAt(const PruneGrid& grid, Vec3 p) {
-    using Real = typename Vec3::value_type;
-    Vec3 q = (p - Vec3(grid.origin)) * Real(1.0 / grid.cellSize);
-    if (!(q.x >= Real(0) && q.y >= Real(0) && q.z >= Real(0) && q.x < Real(grid.dims.x) && q.y < Real(grid.dims.y) &&
-          q.z < Real(grid.dims.z))) {
-        return grid.outsideLeaf;
+    if constexpr (sizeof(typename Vec3::value_type) == sizeof(float)) {
+        return lookup32::LeafLookup{grid.nodes.data()}.pruneLeafAt(p, lookup32::vec4(grid.lookupFrame()),
+                                                                   lookup32::vec4(grid.lookupDims()));
+    } else {
+        return lookup64::LeafLookup{grid.nodes.data()}.pruneLeafAt(p, lookup64::vec4(grid.lookupFrame()),
+                                                                   lookup64::vec4(grid.lookupDims()));
     }
-    Vec3 cell = glm::floor(q);
-    int node = grid.nodes[static_cast<size_t>(int(cell.x) + grid.dims.x * (int(cell.y) + grid.dims.y * int(cell.z)))];
-    while (node < 0) {
-        // q - floor(q) is exact in floating point, so the split is too
-        q = (q - cell) * Real(kSplit);
-        cell = glm::floor(q);
-        node = grid.nodes[static_cast<size_t>(-node - 1 + int(cell.x) + kSplit * (int(cell.y) + kSplit * int(cell.z)))];
-    }
-    return node;
 }
 
 }  // namespace sdfwb::prune

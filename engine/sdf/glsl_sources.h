@@ -10,11 +10,16 @@ namespace sdfwb::sdf {
 std::string_view glslPrelude();
 
 // The shared sources in dependency order (math, transcendental, primitives,
-// operators, material, camera, instructions, parameter blocks, tracer), concatenated.
+// operators, material, camera, instructions, parameter blocks, tracer, ray
+// tree, prune grid layout), concatenated.
 std::string_view glslLibrary();
 
 // The per-sample driver loop (sdf/glsl/sample_driver.glsl), pasted after the
 // generated map() and P() it calls.
 std::string_view glslSampleDriver();
+
+// The prune grid's cell lookup (sdf/glsl/prune_lookup.glsl), pasted after the
+// backend's node accessor PN(i).
+std::string_view glslPruneLookup();
 
 }  // namespace sdfwb::sdf

@@ -43,5 +43,6 @@ SHARED_FN real libraryCos(real x) {
 #include "sdf/glsl/parameter_blocks.glsl"
 #include "sdf/glsl/tracer.glsl"
 #include "sdf/glsl/ray_tree.glsl"
+#include "sdf/glsl/prune_grid.glsl"
 
 }  // namespace SDFWB_SHARED_NS
