@@ -1,8 +1,10 @@
 #include "gl/gl_renderer.h"
 
 #include <chrono>
+#include <optional>
 #include <vector>
 
+#include "gl/fold_run.h"
 #include "gl/program_size.h"
 #include "gl/progressive_render.h"
 #include "gl/shader_generator.h"
@@ -25,7 +27,9 @@ struct GlRenderer::CachedProgram {
 
 namespace {
 
-const char* const kUniformNames[] = {"uParams", "uResolution", "uSubsample", "uAA"};
+const char* const kUniformNames[] = {"uParams", "uResolution", "uSubsample", "uAA",
+                                     "uPruneNodes", "uFoldSpans", "uFoldBlocks"};
+const char* const kFoldSamplers[] = {"uPruneNodes", "uFoldSpans", "uFoldBlocks"};
 
 }  // namespace
 
@@ -33,7 +37,12 @@ GlRenderer::GlRenderer(const glcontext::GlFunctions& gl)
     : gl_(gl),
       paramBuffer_(glcontext::makeBuffer(gl)),
       paramTexture_(glcontext::makeTexture(gl)),
-      vertexArray_(glcontext::makeVertexArray(gl)) {}
+      vertexArray_(glcontext::makeVertexArray(gl)) {
+    for (int i = 0; i < 3; ++i) {
+        foldBuffers_[i] = glcontext::makeBuffer(gl);
+        foldTextures_[i] = glcontext::makeTexture(gl);
+    }
+}
 
 GlRenderer::~GlRenderer() = default;
 
@@ -86,6 +95,41 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     for (const glm::dvec4& v : program.params) {
         for (int i = 0; i < 4; ++i) params.push_back(static_cast<float>(v[i]));
     }
+    // a fold loop reads the grid's extra slots and lists (its cell's kept blocks)
+    std::optional<FoldRun> run = findFoldRun(program);
+    std::shared_ptr<const prune::PruneGrid> grid = run ? prune::pruneGridFor(program) : nullptr;
+    if (run) {
+        std::vector<glm::dvec4> extra = grid ? grid->extraParams : prune::outsideBoundParams(program);
+        if (!grid) {
+            // one cell holding every block: (p - 0) * 0 lands in root cell 0 for every finite p
+            extra.push_back(glm::dvec4(0.0));
+            extra.push_back(glm::dvec4(1.0, 1.0, 1.0, 1.0));
+        }
+        for (const glm::dvec4& v : extra) {
+            for (int i = 0; i < 4; ++i) params.push_back(static_cast<float>(v[i]));
+        }
+        FoldLists lists = foldLists(program, *run, grid.get());
+        long perStep = 2 + (lists.longest + kFoldUnroll - 1) / kFoldUnroll;
+        if (static_cast<long>(worstCaseBackEdges(program)) * perStep >= kLoopLimiter) {
+            throw GlError("GL backend: one pass could take " +
+                          std::to_string(static_cast<long>(worstCaseBackEdges(program)) * perStep) +
+                          " loop iterations (a cell keeps " + std::to_string(lists.longest) +
+                          " children), over llvmpipe's limit of " + std::to_string(kLoopLimiter) +
+                          "; lower render.max_steps or render.shadow_steps, or use the CPU backend");
+        }
+        const std::vector<int>* data[3] = {&lists.nodes, &lists.spans, &lists.blocks};
+        const GLenum formats[3] = {GL_R32I, GL_RG32I, GL_R32I};
+        for (int t = 0; t < 3; ++t) {
+            std::vector<int> values = data[t]->empty() ? std::vector<int>(2, 0) : *data[t];
+            gl_.BindBuffer(GL_TEXTURE_BUFFER, foldBuffers_[t].get());
+            gl_.BufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(values.size() * sizeof(int)), values.data(),
+                           GL_DYNAMIC_DRAW);
+            gl_.BindBuffer(GL_TEXTURE_BUFFER, 0);
+            gl_.ActiveTexture(GL_TEXTURE1 + t);
+            gl_.BindTexture(GL_TEXTURE_BUFFER, foldTextures_[t].get());
+            gl_.TexBuffer(GL_TEXTURE_BUFFER, formats[t], foldBuffers_[t].get());
+        }
+    }
     if (params.empty()) params.assign(4, 0.0f);  // a buffer texture may not be empty
     gl_.BindBuffer(GL_TEXTURE_BUFFER, paramBuffer_.get());
     gl_.BufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(params.size() * sizeof(float)), params.data(),
@@ -98,6 +142,9 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     GLuint p = cached.program.get();
     gl_.UseProgram(p);
     gl_.Uniform1i(cached.uniform("uParams"), 0);
+    for (int t = 0; t < 3; ++t) {
+        if (run) gl_.Uniform1i(cached.uniform(kFoldSamplers[t]), 1 + t);
+    }
     gl_.Uniform2f(cached.uniform("uResolution"), static_cast<float>(program.width), static_cast<float>(program.height));
     gl_.Uniform1i(cached.uniform("uAA"), program.aa);
 }

@@ -86,6 +86,9 @@ private:
     glcontext::GlObject paramBuffer_;
     glcontext::GlObject paramTexture_;
     glcontext::GlObject vertexArray_;
+    // a fold loop's prune-grid inputs (shader_generator.cpp): nodes, spans, blocks
+    glcontext::GlObject foldBuffers_[3];
+    glcontext::GlObject foldTextures_[3];
     GlCounters counters_;
 };
 

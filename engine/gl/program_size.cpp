@@ -1,9 +1,18 @@
 #include "gl/program_size.h"
 
+#include <optional>
+
+#include "gl/fold_run.h"
+
 namespace sdfwb::gl {
 
 std::size_t shaderStatementCount(const program::Program& program) {
     std::size_t count = program.code.size();
+    if (std::optional<FoldRun> run = findFoldRun(program)) {
+        // the run's blocks become one loop body of kFoldUnroll blocks, plus the outside bound
+        count = count - static_cast<std::size_t>(run->length * run->count) +
+                static_cast<std::size_t>(run->length * kFoldUnroll) + prune::outsideBoundCode(program).size();
+    }
     for (const program::FormulaCode& formula : program.formulas) {
         count += formula.tape.instructions().size();
     }

@@ -11,8 +11,9 @@
 
 namespace sdfwb::gl {
 
-// Statements of the generated map(): one per scene instruction and one per
-// formula tape instruction.
+// Statements of the generated map(): one per scene instruction (a fold run's
+// blocks counted once per unrolled copy, gl/fold_run.h) and one per formula
+// tape instruction.
 std::size_t shaderStatementCount(const program::Program& program);
 
 // Above this the GL backend refuses a program (measured on llvmpipe:

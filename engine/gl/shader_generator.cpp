@@ -1,8 +1,11 @@
 #include "gl/shader_generator.h"
 
+#include <optional>
 #include <sstream>
 
 #include "expr/glsl.h"
+#include "gl/fold_run.h"
+#include "prune/prune_grid.h"
 #include "sdf/glsl_sources.h"
 #include "sdf/shared.h"
 
@@ -48,10 +51,15 @@ void main() {
 }
 )";
 
-std::string slots(const Instruction& in) {
+// A slot number in the text; in a fold loop's block, `stride` further per block j.
+std::string slotExpression(int slot, int stride) {
+    return stride == 0 ? std::to_string(slot) : std::to_string(slot) + " + " + std::to_string(stride) + " * j";
+}
+
+std::string slots(const Instruction& in, int stride) {
     std::string args;
     for (int i = 0; i < opcodeInfo(in.op).paramSlots; ++i) {
-        args += ", P(" + std::to_string(in.param + i) + ")";
+        args += ", P(" + slotExpression(in.param + i, stride) + ")";
     }
     return args;
 }
@@ -62,10 +70,11 @@ std::string sample(int r) { return "s" + std::to_string(r); }
 std::string formulaName(int index) { return "formula" + std::to_string(index); }
 
 // One case per operand class (program/opcodes.h), as the CPU interpreter has.
-void emitInstruction(std::ostringstream& out, const Instruction& in) {
+void emitInstruction(std::ostringstream& out, const Instruction& in, int paramStride = 0, int materialStride = 0) {
     const program::OpcodeInfo& info = opcodeInfo(in.op);
     std::string fn(info.function);
-    std::string material = "M(" + std::to_string(in.material) + ")";
+    std::string material = "M(" + slotExpression(in.material, materialStride) + ")";
+    auto slots = [&](const Instruction& i) { return sdfwb::gl::slots(i, paramStride); };
     out << "    ";
     switch (info.opClass) {
     case OpClass::Point: out << point(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ");\n"; break;
@@ -109,11 +118,44 @@ void main() {
 
 std::string_view parameterAccessSource() { return kParameters; }
 
+// The fold loop's inputs: the prune grid's nodes, each leaf's (first, count)
+// into the list of kept blocks, and that list (gl_renderer.cpp binds them).
+constexpr std::string_view kFoldInputs = R"(
+uniform isamplerBuffer uPruneNodes;
+uniform isamplerBuffer uFoldSpans;
+uniform isamplerBuffer uFoldBlocks;
+int PN(int i) { return texelFetch(uPruneNodes, i).x; }
+)";
+
+// A run of blocks (gl/fold_run.h) as a loop over the blocks the cell of p0
+// keeps, kFoldUnroll per iteration; then the outside bound where p0 is
+// outside the grid (prune/prune_grid.h), as the CPU backend's leaf has it.
+void emitFoldLoop(std::ostringstream& out, const program::Program& program, const FoldRun& run) {
+    int grid = static_cast<int>(program.params.size()) + prune::kOutsideBoundSlots;
+    out << "    int leaf = pruneLeafAt(p0, P(" << grid << "), P(" << grid + 1 << "));\n"
+        << "    ivec4 span = texelFetch(uFoldSpans, leaf);\n"
+        << "    for (int k = 0; k < span.y; k += " << kFoldUnroll << ") {\n";
+    for (int u = 0; u < kFoldUnroll; ++u) {
+        out << "    if (k + " << u << " < span.y) {\n"
+            << "    int j = texelFetch(uFoldBlocks, span.x + k + " << u << ").x;\n";
+        for (int i = 0; i < run.length; ++i) {
+            emitInstruction(out, program.code[static_cast<size_t>(run.start + i)],
+                            run.paramStride[static_cast<size_t>(i)], run.materialStride[static_cast<size_t>(i)]);
+        }
+        out << "    }\n";
+    }
+    out << "    }\n";
+}
+
 std::string generateMapFunction(const program::Program& program) {
     std::ostringstream out;
     for (size_t i = 0; i < program.formulas.size(); ++i) {
         out << "\n" << expr::emitGlslFunction(program.formulas[i].tape,
                                               {formulaName(static_cast<int>(i)), "vec3 p", {"p.x", "p.y", "p.z"}});
+    }
+    std::optional<FoldRun> run = findFoldRun(program);
+    if (run) {
+        out << kFoldInputs << sdf::glslPruneLookup();
     }
     out << "\nSample map(vec3 p) {\n";
     out << "    vec3 p0 = p;\n";
@@ -123,8 +165,21 @@ std::string generateMapFunction(const program::Program& program) {
     for (int r = 0; r < program.sampleRegisters; ++r) {
         out << "    Sample " << sample(r) << ";\n";
     }
-    for (const Instruction& in : program.code) {
-        emitInstruction(out, in);
+    int end = run ? run->start : static_cast<int>(program.code.size());
+    for (int k = 0; k < end; ++k) {
+        emitInstruction(out, program.code[static_cast<size_t>(k)]);
+    }
+    if (run) {
+        emitFoldLoop(out, program, *run);
+        for (size_t k = static_cast<size_t>(run->start + run->length * run->count); k < program.code.size(); ++k) {
+            emitInstruction(out, program.code[k]);
+        }
+        int grid = static_cast<int>(program.params.size()) + prune::kOutsideBoundSlots;
+        out << "    if (leaf == int(P(" << grid + 1 << ").w)) {\n";
+        for (const Instruction& in : prune::outsideBoundCode(program)) {
+            emitInstruction(out, in);
+        }
+        out << "    }\n";
     }
     out << "    return " << sample(program.result) << ";\n}\n";
     return out.str();

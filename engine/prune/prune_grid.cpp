@@ -118,23 +118,14 @@ bool endsWithGround(const program::Program& program) {
 constexpr double kOutsideDistanceScale = 1048576.0;  // a power of two: step = box distance exactly
 
 void addOutsideLeaf(const program::Program& program, PruneGrid& grid) {
-    int base = static_cast<int>(program.params.size());
-    glm::dvec3 centre = 0.5 * (program.rootMin + program.rootMax), half = 0.5 * (program.rootMax - program.rootMin);
-    grid.extraParams = {glm::dvec4(-centre, 0.0), glm::dvec4(half, 0.0), glm::dvec4(kOutsideDistanceScale, 0, 0, 0),
-                        glm::dvec4(1.0 / kOutsideDistanceScale, 0, 0, 0)};
-    int r = program.result;
-    PruneLeaf leaf{static_cast<int>(grid.code.size()), 4, r};
-    grid.code.push_back({Opcode::Translate, 1, 0, -1, base, -1, 0});
-    grid.code.push_back({Opcode::Box, r, 1, -1, base + 1, 0, 0});
-    grid.code.push_back({Opcode::ScaleDistance, r, r, 0, base + 2, -1, 0});
-    grid.code.push_back({Opcode::StepScale, r, r, 0, base + 3, -1, 0});
-    if (endsWithGround(program)) {
-        grid.code.push_back(program.code[program.code.size() - 2]);
-        grid.code.push_back(program.code.back());
-        leaf.count += 2;
-    }
+    std::vector<Instruction> code = outsideBoundCode(program);
+    grid.extraParams = outsideBoundParams(program);
     grid.outsideLeaf = static_cast<int>(grid.leaves.size());
-    grid.leaves.push_back(leaf);
+    grid.leaves.push_back({static_cast<int>(grid.code.size()), static_cast<int>(code.size()), program.result});
+    grid.code.insert(grid.code.end(), code.begin(), code.end());
+    // pruneLeafAt's arguments, for a backend reading them from its parameter buffer
+    grid.extraParams.push_back(grid.lookupFrame());
+    grid.extraParams.push_back(grid.lookupDims());
 }
 
 // How far the grid reaches beyond the root's box. A shadow ray from a surface
@@ -157,6 +148,26 @@ double gridMargin(const program::Program& program) {
 }
 
 }  // namespace
+
+std::vector<Instruction> outsideBoundCode(const program::Program& program) {
+    int base = static_cast<int>(program.params.size());
+    int r = program.result;
+    std::vector<Instruction> code = {{Opcode::Translate, 1, 0, -1, base, -1, 0},
+                                     {Opcode::Box, r, 1, -1, base + 1, 0, 0},
+                                     {Opcode::ScaleDistance, r, r, 0, base + 2, -1, 0},
+                                     {Opcode::StepScale, r, r, 0, base + 3, -1, 0}};
+    if (endsWithGround(program)) {
+        code.push_back(program.code[program.code.size() - 2]);
+        code.push_back(program.code.back());
+    }
+    return code;
+}
+
+std::vector<glm::dvec4> outsideBoundParams(const program::Program& program) {
+    glm::dvec3 centre = 0.5 * (program.rootMin + program.rootMax), half = 0.5 * (program.rootMax - program.rootMin);
+    return {glm::dvec4(-centre, 0.0), glm::dvec4(half, 0.0), glm::dvec4(kOutsideDistanceScale, 0, 0, 0),
+            glm::dvec4(1.0 / kOutsideDistanceScale, 0, 0, 0)};
+}
 
 std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program, int minInstructions) {
     // the outside bound needs a second point register

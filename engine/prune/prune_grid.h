@@ -48,7 +48,8 @@ struct PruneGrid {
     std::vector<PruneLeaf> leaves;
     std::vector<program::Instruction> code;
     int outsideLeaf = 0;
-    // Parameter slots the outside bound reads, numbered after Program::params.
+    // Parameter slots numbered after Program::params: the outside bound's
+    // (outsideBoundParams), then lookupFrame() and lookupDims().
     std::vector<glm::dvec4> extraParams;
     int longestLeaf = 0;  // instructions
 
@@ -70,6 +71,13 @@ long pruneGridsBuilt();
 // Smaller programs are evaluated whole: a grid would cost more to build than
 // it saves, and the GL backend (no pruning yet) renders them as they are.
 inline constexpr int kMinPrunedInstructions = 128;
+
+// The field outside the grid: a safe step to the root's box (reading
+// outsideBoundParams from slot Program::params.size() on), the ground unioned
+// in exactly when the scene has one; result in Program::result.
+std::vector<program::Instruction> outsideBoundCode(const program::Program& program);
+std::vector<glm::dvec4> outsideBoundParams(const program::Program& program);
+inline constexpr int kOutsideBoundSlots = 4;
 
 // Builds it without the cache; tests lower `minInstructions` to prune small scenes.
 std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program,
