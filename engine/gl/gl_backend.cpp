@@ -10,7 +10,11 @@ constexpr int kProgressiveTileSize = 64;  // pixels per side of one draw, when t
 
 GlBackend::GlBackend(glcontext::GlContext& context, std::unique_ptr<glcontext::GlContext> builderContext)
     : context_(context), renderer_(context.gl()) {
-    if (builderContext) builder_ = std::make_unique<ProgramBuilder>(std::move(builderContext));
+    if (builderContext) {
+        // a caller that must not wait: programs build on a worker, grids in the background
+        builder_ = std::make_unique<ProgramBuilder>(std::move(builderContext));
+        renderer_.setWaitForGrid(false);
+    }
 }
 
 GlBackend::GlBackend(std::unique_ptr<glcontext::GlContext> owned)

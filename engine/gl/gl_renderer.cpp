@@ -86,6 +86,7 @@ void GlRenderer::warmUp(const program::Program& program) {
     program::Program tiny = program;
     tiny.width = tiny.height = 4;
     tiny.aa = 1;
+    tiny.prune = false;  // the same shader; no grid built for four pixels
     render(tiny);
 }
 
@@ -97,7 +98,13 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     }
     // a fold loop reads the grid's extra slots and lists (its cell's kept blocks)
     std::optional<FoldRun> run = findFoldRun(program);
-    std::shared_ptr<const prune::PruneGrid> grid = run ? prune::pruneGridFor(program) : nullptr;
+    std::shared_ptr<const prune::PruneGrid> grid;
+    if (run && waitForGrid_) {
+        grid = prune::pruneGridFor(program);
+    } else if (run) {
+        // until the grid is built, every block in every cell: the same floats, slower
+        grid = prune::pruneGridIfBuilt(program).value_or(nullptr);
+    }
     if (run) {
         std::vector<glm::dvec4> extra = grid ? grid->extraParams : prune::outsideBoundParams(program);
         if (!grid) {

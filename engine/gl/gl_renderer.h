@@ -75,8 +75,14 @@ public:
     // Sets the blend and scissor state draws need (on) or restores it (off).
     void setDrawState(bool on);
 
+    // Whether a draw waits for the program's prune grid (the default) or,
+    // while it is built in the background, draws with one cell keeping
+    // everything (the window: nothing slow on the UI thread).
+    void setWaitForGrid(bool wait) { waitForGrid_ = wait; }
+
 private:
     struct CachedProgram;
+    bool waitForGrid_ = true;
     const CachedProgram& programFor(const program::Program& program);
     void uploadParameters(const program::Program& program, const CachedProgram& cached);
     const CachedProgram* bound_ = nullptr;

@@ -1,6 +1,7 @@
 #pragma once
 // Generates the fragment shader for a compiled scene: the shared SDF library,
-// a straight-line map() with exactly the scene's instructions (parameters read
+// a straight-line map() with exactly the scene's instructions (a run of many
+// children as one loop over a prune-grid cell's kept ones, gl/fold_run.h; parameters read
 // from a buffer texture, so edits change data, not text), and one loop that
 // drives the shared tracer with a single call site of map().
 

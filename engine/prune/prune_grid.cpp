@@ -6,9 +6,12 @@
 #include <cstring>
 #include <deque>
 #include <mutex>
+#include <optional>
+#include <set>
 
 #include <tbb/parallel_for.h>
 
+#include "jobs/job_queue.h"
 #include "prune/cell_pruning.h"
 #include "sdf/shared.h"
 
@@ -250,24 +253,69 @@ std::atomic<long> gridsBuilt{0};
 
 long pruneGridsBuilt() { return gridsBuilt.load(); }
 
-std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program) {
-    // progressive and tiled renders of one program ask for its grid many times
-    static std::mutex mutex;
-    static std::deque<std::pair<std::uint64_t, std::shared_ptr<const PruneGrid>>> cache;
-    constexpr size_t kCached = 4;
-    std::uint64_t key = gridKey(program);
-    {
-        std::lock_guard lock(mutex);
-        for (const auto& entry : cache) {
+namespace {
+
+// The grids built last, by gridKey; and the keys a background build is on.
+struct GridCache {
+    std::mutex mutex;
+    std::deque<std::pair<std::uint64_t, std::shared_ptr<const PruneGrid>>> grids;
+    std::set<std::uint64_t> building;
+
+    std::optional<std::shared_ptr<const PruneGrid>> find(std::uint64_t key) {
+        for (const auto& entry : grids) {
             if (entry.first == key) return entry.second;
         }
+        return std::nullopt;
+    }
+};
+
+GridCache& gridCache() {
+    static GridCache cache;
+    return cache;
+}
+
+// Constructed after the cache (pruneGridIfBuilt asks the cache first), so
+// destroyed before it: its last job still finds the cache.
+jobs::JobQueue& backgroundBuilds() {
+    static jobs::JobQueue queue(1);
+    return queue;
+}
+
+}  // namespace
+
+std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program) {
+    // progressive and tiled renders of one program ask for its grid many times
+    constexpr size_t kCached = 4;
+    GridCache& cache = gridCache();
+    std::uint64_t key = gridKey(program);
+    {
+        std::lock_guard lock(cache.mutex);
+        if (auto grid = cache.find(key)) return *grid;
     }
     std::shared_ptr<const PruneGrid> grid = buildPruneGrid(program);
     ++gridsBuilt;
-    std::lock_guard lock(mutex);
-    cache.emplace_front(key, grid);
-    if (cache.size() > kCached) cache.pop_back();
+    std::lock_guard lock(cache.mutex);
+    cache.grids.emplace_front(key, grid);
+    if (cache.grids.size() > kCached) cache.grids.pop_back();
     return grid;
+}
+
+std::optional<std::shared_ptr<const PruneGrid>> pruneGridIfBuilt(const program::Program& program) {
+    GridCache& cache = gridCache();
+    std::uint64_t key = gridKey(program);
+    {
+        std::lock_guard lock(cache.mutex);
+        if (auto grid = cache.find(key)) return grid;
+        if (!cache.building.insert(key).second) return std::nullopt;
+    }
+    auto copy = std::make_shared<program::Program>(program);
+    backgroundBuilds().submit([copy, key](jobs::Job&) {
+        pruneGridFor(*copy);
+        GridCache& c = gridCache();
+        std::lock_guard lock(c.mutex);
+        c.building.erase(key);
+    });
+    return std::nullopt;
 }
 
 }  // namespace sdfwb::prune

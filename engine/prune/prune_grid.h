@@ -10,6 +10,7 @@
 // ground plane when there is one. docs/large-scenes.md says why.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -64,12 +65,17 @@ struct PruneGrid {
 // Grids are cached by the program's instructions and parameters.
 std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program);
 
+// The cached grid (null: the program has none); nullopt while it is not
+// built yet, and then a build starts on a background thread, for a caller
+// that must not wait (the window's GL viewport draws without it meanwhile).
+std::optional<std::shared_ptr<const PruneGrid>> pruneGridIfBuilt(const program::Program& program);
+
 // How many grids pruneGridFor has built in this process (its cache misses):
 // the picker's tests check that a pick builds none.
 long pruneGridsBuilt();
 
 // Smaller programs are evaluated whole: a grid would cost more to build than
-// it saves, and the GL backend (no pruning yet) renders them as they are.
+// it saves (the GL backend's fold loop then keeps every block, gl/fold_run.h).
 inline constexpr int kMinPrunedInstructions = 128;
 
 // The field outside the grid: a safe step to the root's box (reading
