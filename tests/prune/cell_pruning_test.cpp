@@ -102,6 +102,22 @@ INSTANTIATE_TEST_SUITE_P(
                       LargeCase{"nested", [] { return test::nestedGroupsScene(27, 8); }}),
     [](const auto& info) { return info.param.name; });
 
+// The window's GL viewport asks without waiting: not built yet, then the
+// cached grid once a build is done (no clock: the blocking call waits for it).
+TEST(PruneGrid, IfBuiltNeverWaitsAndThenReturnsTheCachedGrid) {
+    program::Program program = program::compileScene(test::cityScene(100), {.width = 24, .height = 14, .aa = 1});
+    EXPECT_FALSE(prune::pruneGridIfBuilt(program).has_value());
+    std::shared_ptr<const prune::PruneGrid> grid = prune::pruneGridFor(program);
+    ASSERT_TRUE(grid);
+    std::optional<std::shared_ptr<const prune::PruneGrid>> ready = prune::pruneGridIfBuilt(program);
+    ASSERT_TRUE(ready.has_value());
+    EXPECT_EQ(*ready, grid);
+    // a scene without a grid answers null, not "not yet", once built
+    program::Program small = program::compileScene(test::moleculeScene("molecule_10"));
+    prune::pruneGridFor(small);
+    EXPECT_EQ(prune::pruneGridIfBuilt(small), std::optional<std::shared_ptr<const prune::PruneGrid>>(nullptr));
+}
+
 TEST(PruneGrid, NoPruneSwitchSmallAndUnboundedScenesHaveNoGrid) {
     EXPECT_FALSE(prune::buildPruneGrid(program::compileScene(test::moleculeScene("molecule_10"))));
     scene::Scene s = test::moleculeScene("molecule_100");
