@@ -1,6 +1,7 @@
 #include "scene/scene_json.h"
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <span>
 #include <sstream>
@@ -323,22 +324,34 @@ FieldValue readFieldValue(Reader& reader, const FieldSpec& field, const json& va
     return result;
 }
 
-// `depth` is the node's level, the root being 1; the reader recurses, so the
-// depth is checked before the children are read.
-Node readNode(Reader& reader, const json& value, const std::string& path, int depth) {
+// A node being read: its own members are read on the way down, its children
+// one at a time, and the checks that need the children on the way up.
+struct PendingNode {
     Node node;
+    const KindSpec* spec;
+    ObjectReader object;
+    std::string path;
+    const json* children = nullptr;  // the "children" member, when it is an array
+    std::string childrenPath;
+    std::size_t next = 0;  // the next child to read
+};
+
+// Reads a node's own members at level `depth` (the root being 1). Without a
+// PendingNode the node failed (the problem is recorded) and stands as an empty
+// Node, so that its parent's checks still run.
+std::optional<PendingNode> beginNode(Reader& reader, const json& value, const std::string& path, int depth) {
     if (depth > kMaxNodeDepth) {
         reader.fail(path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth) + " levels");
-        return node;
+        return std::nullopt;
     }
     if (!value.is_object()) {
         reader.fail(path, "must be an object");
-        return node;
+        return std::nullopt;
     }
     auto kindIt = value.find("kind");
     if (kindIt == value.end() || !kindIt->is_string()) {
         reader.fail(path + ".kind", "missing node kind (a string such as \"sphere\" or \"union\")");
-        return node;
+        return std::nullopt;
     }
     const KindSpec* spec = findKind(kindIt->get<std::string>());
     if (!spec) {
@@ -347,10 +360,11 @@ Node readNode(Reader& reader, const json& value, const std::string& path, int de
             list += (list.empty() ? "" : ", ") + std::string(k.name);
         }
         reader.fail(path + ".kind", "unknown node kind " + io::quoted(kindIt->get<std::string>()) + " (known: " + list + ")");
-        return node;
+        return std::nullopt;
     }
-    node = Node::make(spec->kind);
-    ObjectReader object(reader, value, path);
+    PendingNode pending{Node::make(spec->kind), spec, ObjectReader(reader, value, path), path};
+    Node& node = pending.node;
+    ObjectReader& object = pending.object;
     object.member("kind", [](const json&, const std::string&) {});
     object.member("name", [&](const json& v, const std::string& p) { reader.string(v, p, node.name); });
     object.member("hidden", [&](const json& v, const std::string& p) { reader.flag(v, p, node.hidden); });
@@ -367,25 +381,62 @@ Node readNode(Reader& reader, const json& value, const std::string& path, int de
                 reader.fail(p, "must be an array of nodes");
                 return;
             }
-            for (size_t i = 0; i < v.size(); ++i) {
-                node.children.push_back(readNode(reader, v[i], p + "[" + std::to_string(i) + "]", depth + 1));
-            }
+            pending.children = &v;
+            pending.childrenPath = p;
         });
     }
-    object.finish(spec->name);
-    for (const auto& [field, reason] : checkNodeFields(*spec, node.fields)) {
-        reader.fail(path + "." + field, reason);
+    return pending;
+}
+
+// The checks of a node whose children have all been read.
+Node finishNode(Reader& reader, PendingNode& pending) {
+    const KindSpec& spec = *pending.spec;
+    pending.object.finish(spec.name);
+    for (const auto& [field, reason] : checkNodeFields(spec, pending.node.fields)) {
+        reader.fail(pending.path + "." + field, reason);
     }
-    int count = static_cast<int>(node.children.size());
-    if (count < spec->minChildren || (spec->maxChildren >= 0 && count > spec->maxChildren)) {
-        std::string expected = spec->minChildren == spec->maxChildren
-                                   ? "exactly " + std::to_string(spec->minChildren)
-                                   : "at least " + std::to_string(spec->minChildren);
-        reader.fail(path + ".children", std::string(spec->name) + " needs " + expected + " child" +
-                                            (spec->minChildren == 1 && spec->maxChildren == 1 ? "" : "ren") +
-                                            " (got " + std::to_string(count) + ")");
+    int count = static_cast<int>(pending.node.children.size());
+    if (count < spec.minChildren || (spec.maxChildren >= 0 && count > spec.maxChildren)) {
+        std::string expected = spec.minChildren == spec.maxChildren ? "exactly " + std::to_string(spec.minChildren)
+                                                                    : "at least " + std::to_string(spec.minChildren);
+        reader.fail(pending.path + ".children", std::string(spec.name) + " needs " + expected + " child" +
+                                                    (spec.minChildren == 1 && spec.maxChildren == 1 ? "" : "ren") +
+                                                    " (got " + std::to_string(count) + ")");
     }
-    return node;
+    return std::move(pending.node);
+}
+
+// Reads a node tree depth first on a stack of its own, not the native one: a
+// legal tree is kMaxNodeDepth levels deep, and a thread's stack (smaller
+// still under AddressSanitizer) need not hold a frame per level. Problems come
+// in the order a recursive reader would give them.
+Node readNode(Reader& reader, const json& value, const std::string& path) {
+    std::vector<PendingNode> stack;
+    std::optional<PendingNode> root = beginNode(reader, value, path, 1);
+    if (!root) {
+        return Node{};
+    }
+    stack.push_back(std::move(*root));
+    while (true) {
+        PendingNode& top = stack.back();
+        if (top.children && top.next < top.children->size()) {
+            const std::size_t i = top.next++;
+            std::optional<PendingNode> child = beginNode(reader, (*top.children)[i], top.childrenPath + "[" +
+                                                         std::to_string(i) + "]", static_cast<int>(stack.size()) + 1);
+            if (child) {
+                stack.push_back(std::move(*child));  // `top` is invalid from here
+            } else {
+                top.node.children.push_back(Node{});
+            }
+            continue;
+        }
+        Node finished = finishNode(reader, top);
+        stack.pop_back();
+        if (stack.empty()) {
+            return finished;
+        }
+        stack.back().node.children.push_back(std::move(finished));
+    }
 }
 
 void readCamera(Reader& reader, const json& value, const std::string& path, Camera& camera) {
@@ -474,7 +525,7 @@ void checkVersion(Reader& reader, const json& value) {
 
 Node nodeFromJson(const json& value, const std::string& path) {
     Reader reader;
-    Node node = readNode(reader, value, path, 1);
+    Node node = readNode(reader, value, path);
     if (!reader.problems.empty()) {
         throw SceneError(reader.problems);
     }
@@ -526,7 +577,7 @@ Scene sceneFromJson(const json& value) {
             scene.materials.push_back(std::move(m));
         }
     });
-    object.member("root", [&](const json& v, const std::string& p) { scene.root = readNode(reader, v, p, 1); });
+    object.member("root", [&](const json& v, const std::string& p) { scene.root = readNode(reader, v, p); });
     object.finish("a scene");
     checkMaterialReferences(reader, scene, scene.root, "root");
     if (!scene.environment.ground.material.empty() && !scene.findMaterial(scene.environment.ground.material)) {
