@@ -169,28 +169,35 @@ Polynomial& Polynomial::operator-=(const Polynomial& other) {
 Polynomial& Polynomial::operator*=(const Polynomial& other) {
   check_same_ring(other, "product");
   // One sorted partial product per term of the shorter factor (monomial
-  // orders respect multiplication), merged pairwise like a balanced tree.
+  // orders respect multiplication), merged like a binary counter: a part of
+  // level k holds 2^k partial products, and two parts of one level merge at
+  // once. The same balanced merges as merging all parts pairwise, but at most
+  // one part per level is alive, so memory follows the result's size, not
+  // the number of term products (all of them at once were gigabytes for a
+  // product the expansion budget allows, (x+y+1)^600).
   const Polynomial& small = terms_.size() <= other.terms_.size() ? *this : other;
   const Polynomial& large = terms_.size() <= other.terms_.size() ? other : *this;
-  std::vector<std::vector<Term>> parts;
-  parts.reserve(small.terms_.size());
+  std::vector<std::pair<std::vector<Term>, int>> parts;  // (terms, level), levels decreasing
   for (const Term& s : small.terms_) {
     std::vector<Term> part;
     part.reserve(large.terms_.size());
     for (const Term& l : large.terms_) {
       part.push_back(Term{s.monomial * l.monomial, s.coefficient * l.coefficient});
     }
-    parts.push_back(std::move(part));
+    int level = 0;
+    while (!parts.empty() && parts.back().second == level) {
+      part = merge_terms(*ring_, std::move(parts.back().first), part, +1);
+      parts.pop_back();
+      ++level;
+    }
+    parts.emplace_back(std::move(part), level);
   }
   while (parts.size() > 1) {
-    std::vector<std::vector<Term>> next;
-    for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
-      next.push_back(merge_terms(*ring_, std::move(parts[i]), parts[i + 1], +1));
-    }
-    if (parts.size() % 2) next.push_back(std::move(parts.back()));
-    parts = std::move(next);
+    std::vector<Term> last = std::move(parts.back().first);
+    parts.pop_back();
+    parts.back().first = merge_terms(*ring_, std::move(parts.back().first), last, +1);
   }
-  terms_ = parts.empty() ? std::vector<Term>{} : std::move(parts.front());
+  terms_ = parts.empty() ? std::vector<Term>{} : std::move(parts.front().first);
   return *this;
 }
 
