@@ -85,6 +85,11 @@ inline void runPost(F fn, const program::Instruction& in, const vec4* q, Registe
     r.samples[in.dst] = withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.points[in.b], s...); });
 }
 template <int Slots, typename F>
+inline void runTexture(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    r.samples[in.dst] =
+        withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.points[in.b], r.points[0], s...); });
+}
+template <int Slots, typename F>
 inline void runConstant(F fn, const program::Instruction& in, const vec4*, Registers& r) {
     r.samples[in.dst] = fn(materialAtSlot(r.params, MATERIAL_SLOT));
 }

@@ -101,6 +101,10 @@ void emitInstruction(std::ostringstream& out, const Instruction& in, int paramSt
     case OpClass::Post:
         out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << slots(in) << ");\n";
         break;
+    case OpClass::Texture:
+        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << point(0)
+            << slots(in) << ");\n";
+        break;
     case OpClass::Constant: out << sample(in.dst) << " = " << fn << "(M(MATERIAL_SLOT));\n"; break;
     }
 }

@@ -36,6 +36,10 @@ static_assert(static_cast<int>(scene::LightingModel::Phong) == codes::LIGHTING_P
 static_assert(static_cast<int>(scene::GroundPattern::Plain) == codes::GROUND_PLAIN);
 static_assert(static_cast<int>(scene::GroundPattern::Checker) == codes::GROUND_CHECKER);
 static_assert(static_cast<int>(scene::GroundPattern::Grid) == codes::GROUND_GRID);
+static_assert(static_cast<int>(scene::TexturePattern::None) == codes::TEXTURE_NONE);
+static_assert(static_cast<int>(scene::TexturePattern::Checker) == codes::TEXTURE_CHECKER);
+static_assert(static_cast<int>(scene::TexturePattern::Stripes) == codes::TEXTURE_STRIPES);
+static_assert(static_cast<int>(scene::TexturePattern::Noise) == codes::TEXTURE_NOISE);
 static_assert(static_cast<int>(scene::SmoothVariant::Polynomial) == codes::SMOOTH_POLYNOMIAL);
 static_assert(static_cast<int>(scene::SmoothVariant::Exponential) == codes::SMOOTH_EXPONENTIAL);
 static_assert(static_cast<int>(scene::SmoothVariant::Power) == codes::SMOOTH_POWER);
@@ -98,8 +102,10 @@ public:
         // the scene-wide blocks come first; compileScene fills them
         program_.params.resize(static_cast<size_t>(shared::MATERIAL_SLOT), dvec4(0.0));
         defaultMaterialSlot_ = addMaterial(scene::defaultMaterial());
-        for (const scene::Material& m : scene.materials) {
+        for (size_t i = 0; i < scene.materials.size(); ++i) {
+            const scene::Material& m = scene.materials[i];
             materialSlots_[m.name] = addMaterial(m);
+            materialIndex_.emplace(m.name, i);
         }
     }
 
@@ -140,6 +146,7 @@ public:
         int s = allocSample();
         ShapeCode shape = code(node);
         emit({shape.op, s, p, -1, addParams(shape.params), materialSlot(node.text("material")), 0});
+        texture(node, s, p);
         if (p != point) releasePoint();
         return s;
     }
@@ -149,6 +156,7 @@ public:
         int s = allocSample();
         emit({Opcode::SdfFormula, s, p, -1, -1, materialSlot(node.text("material")),
               addFormula(node.text("formula"), false)});
+        texture(node, s, p);
         if (p != point) releasePoint();
         return s;
     }
@@ -162,6 +170,7 @@ public:
                                dvec4((hi - lo) * 0.5, node.real("sheet_thickness") * 0.5)});
         int material = materialSlot(node.text("material"));
         emit({Opcode::ImplicitFormula, s, p, -1, param, material, addFormula(node.text("formula"), true)});
+        texture(node, s, p);
         if (p != point) releasePoint();
         return s;
     }
@@ -202,7 +211,10 @@ public:
     int scale(const Node& node, int point, dvec3 offset) {
         double factor = node.real("factor");
         int r = pointOp(Opcode::Scale, point, {dvec4(factor, 0, 0, 0)});
+        double outerScale = objectScale_;
+        objectScale_ *= factor;
         int s = compile(node.children.at(0), r, offset / factor);
+        objectScale_ = outerScale;
         releasePoint();
         postOp(Opcode::ScaleDistance, s, r, {dvec4(factor, 0, 0, 0)});
         return s;
@@ -259,7 +271,26 @@ public:
         return finishPointOp(node.children.at(0), point, p, r, 1.0);
     }
 
+    // The width one sample spans at distance 1 (set before compiling): the
+    // footprint by which the shared code filters textures and the ground.
+    double footprintPerDistance = 0.0;
+
 private:
+    // A primitive whose material has a texture gets its sample textured at
+    // its object-space point P[p] (texture.glsl); a scene without textures
+    // compiles to the same code as before they existed. The footprint is
+    // converted to texture units: world widths shrink by the scale nodes
+    // above the primitive (objectScale_), then by the texture's scale.
+    void texture(const Node& node, int sample, int point) {
+        auto it = materialIndex_.find(node.text("material"));
+        const scene::Material& m = it == materialIndex_.end() ? defaultMaterial_ : scene_.materials[it->second];
+        if (m.texture == scene::TexturePattern::None) return;
+        double perUnit = 1.0 / m.textureScale;
+        double footprint = footprintPerDistance * perUnit / objectScale_;
+        int param = addParams({dvec4(static_cast<double>(m.texture), perUnit, footprint, 0), dvec4(m.textureColor, 0)});
+        emit({Opcode::Texture, sample, sample, point, param, -1, 0});
+    }
+
     // x minus the nearest multiple of period (period > 0), exact in double for
     // the magnitudes of a scene.
     static double reduceModulo(double x, double period) { return x - period * std::floor(x / period + 0.5); }
@@ -381,6 +412,9 @@ private:
     scene::Visibility visibility_;
     Program program_;
     std::map<std::string, int> materialSlots_;
+    std::map<std::string, size_t> materialIndex_;  // into scene_.materials
+    scene::Material defaultMaterial_ = scene::defaultMaterial();
+    double objectScale_ = 1.0;  // product of the scale factors above the node being compiled
     int defaultMaterialSlot_ = 0;
     int pointTop_ = 1;
     int sampleTop_ = 0;
@@ -495,6 +529,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     int aa = options.aa > 0 ? options.aa : r.aa;
     // at distance t one sub-sample spans t * 2 tan(fov/2) / (height * aa)
     double footprintPerDistance = 2.0 * frame.tanHalfFov / (height * aa);
+    compiler.footprintPerDistance = footprintPerDistance;
     int result = compiler.compile(scene.root, 0, frame.eye);
     if (scene.environment.ground.enabled) {
         int ground = compiler.compileGround(scene.environment.ground, frame.eye, footprintPerDistance);

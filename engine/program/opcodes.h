@@ -21,6 +21,7 @@ enum class OpClass {
     Combine,        // S[dst] = f(S[a], S[b])
     SmoothCombine,  // S[dst] = f(S[a], S[b], slots, variant)
     Post,           // S[dst] = f(S[a], P[b], slots)
+    Texture,        // S[dst] = f(S[a], P[b], P[0], slots): P[0] is the march point, the eye at 0
     Constant,       // S[dst] = f(default material): "nothing here"
 };
 
@@ -66,6 +67,7 @@ constexpr bool isCombineClass(OpClass c) { return c == OpClass::Combine || c == 
     X(RoundDistance, "round_distance", Post, 1, instRoundDistance)                   \
     X(Displace, "displace", Post, 1, instDisplace)                                   \
     X(StepScale, "step_scale", Post, 1, instStepScale)                               \
+    X(Texture, "texture", Texture, 2, instTexture)                                   \
     X(Empty, "empty", Constant, 0, instEmpty)
 
 enum class Opcode {

@@ -52,6 +52,11 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
+// Material textures (sdf/glsl/texture.glsl's TEXTURE_* codes, static_asserted in the compiler).
+enum class TexturePattern { None, Checker, Stripes, Noise };
+inline constexpr const char* kTexturePatternNames[] = {"none", "checker", "stripes", "noise"};
+static_assert(std::size(kTexturePatternNames) == static_cast<size_t>(TexturePattern::Noise) + 1);
+
 struct Material {
     std::string name;
     glm::dvec3 ambient{0.05};   // R_A
@@ -68,6 +73,11 @@ struct Material {
     glm::dvec3 transmissionColor{1.0};    // M_T
     double ior = 1.5;                     // index of refraction (outside: 1)
     bool fresnel = false;                 // Schlick's weights instead of the notes' fixed k_ps, k_t
+    // Solid procedural colour texture (sdf/glsl/texture.glsl): mixes ambient
+    // and diffuse towards textureColor by the pattern at the object-space point.
+    TexturePattern texture = TexturePattern::None;
+    double textureScale = 0.25;           // cell, slab or noise feature size, object units
+    glm::dvec3 textureColor{0.1};
 
     bool operator==(const Material&) const = default;
 };

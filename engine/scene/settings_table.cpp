@@ -74,6 +74,10 @@ const Setting<Material> kMaterial[] = {
     {"transmission_color", "transmission colour M_T", "", Colour, &Material::transmissionColor},
     {"ior", "index of refraction", "", Real, &Material::ior, Closed, 0.2, 4, {}, {0.005, 0.2, 4}},
     {"fresnel", "Fresnel (Schlick)", "", Flag, &Material::fresnel},
+    {"texture", "texture", "", Choice, choiceMember<&Material::texture>(), Any, 0, 0, kTexturePatternNames},
+    {"texture_scale", "texture scale", "", Real, &Material::textureScale, Closed, 1e-4, 1e4, {},
+     {0.005, 1e-4, 1e4, "%.3f"}},
+    {"texture_color", "texture colour", "", Colour, &Material::textureColor},
 };
 
 }  // namespace

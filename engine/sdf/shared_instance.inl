@@ -38,6 +38,7 @@ SHARED_FN real libraryCos(real x) {
 #include "sdf/glsl/primitives.glsl"
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"
+#include "sdf/glsl/texture.glsl"
 #include "sdf/glsl/camera.glsl"
 #include "sdf/glsl/instructions.glsl"
 #include "sdf/glsl/parameter_blocks.glsl"

@@ -138,6 +138,12 @@ std::vector<ConformanceCase> conformanceCases() {
         {Opcode::RoundDistance, {{dvec4(0.2, 0, 0, 0)}, {dvec4(0)}, {dvec4(-1, 0, 0, 0)}}},
         {Opcode::Displace, {{dvec4(0.1, 5, 0.5, 0)}, {dvec4(0)}, {dvec4(0.3, 1e4, 1, 0)}}, "", {0}, displaceTolerance},
         {Opcode::StepScale, {{dvec4(0.5, 0, 0, 0)}, {dvec4(0)}, {dvec4(1, 0, 0, 0)}}},
+        {Opcode::Texture,
+         {{dvec4(shared::TEXTURE_CHECKER, 4, 0.01, 0), dvec4(0.1, 0.2, 0.3, 0)},
+          {dvec4(shared::TEXTURE_STRIPES, 1, 0, 0), dvec4(0.9, 0.8, 0.7, 0)},
+          {dvec4(shared::TEXTURE_NOISE, 2.5, 0.002, 0), dvec4(0.5, 0.25, 0, 0)},
+          {dvec4(shared::TEXTURE_NOISE, 1e3, kHuge, 0), dvec4(1, 1, 1, 0)},
+          {dvec4(shared::TEXTURE_NONE, 1, 0.01, 0), dvec4(0, 0, 0, 0)}}},
         {Opcode::Empty, {{}}},
     };
 }
@@ -243,6 +249,7 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
         p.result = 2;
         break;
     case OpClass::Post:
+    case OpClass::Texture:
         p.sampleRegisters = 2;
         shape(Opcode::Sphere, 0, 0, dvec4(1.25, 0, 0, 0), first);
         p.code.push_back({c.op, 1, 0, 0, out.opParam, -1, 0});

@@ -143,6 +143,7 @@ scene::Scene sceneUsingAMaterial() {
     scene::Scene s;
     scene::Material m;
     m.name = "m";
+    m.texture = scene::TexturePattern::Checker;  // else the texture's scale and colour are inert
     s.materials.push_back(m);
     s.root = scene::Node::make(scene::NodeKind::Sphere);
     s.root.set("material", std::string("m"));

@@ -1,0 +1,74 @@
+// Procedural colour textures (lecture notes on realism, 1.1), solid: a
+// pattern of the primitive's object-space point, so it moves with its node
+// and needs no (u, v) parametrization (booleans, formulas and deformed
+// shapes included). Like the ground's patterns (material.glsl) each is
+// filtered over the sample's footprint: an isotropic width w across the ray,
+// in texture units. The pattern's coverage mixes the material's ambient and
+// diffuse colour towards the texture colour.
+const int TEXTURE_NONE = 0;
+const int TEXTURE_CHECKER = 1;  // cubes of side `scale`, alternating
+const int TEXTURE_STRIPES = 2;  // slabs of thickness `scale` stacked along object y
+const int TEXTURE_NOISE = 3;    // value noise of feature size `scale`, two octaves
+
+SHARED_FN real fractr(real x) { return x - floor(x); }
+
+// A hash of a lattice point into [0, 1) from + and * only (Hoskins's "hash
+// without sine"), so float GLSL and float C++ give the same bits; sin-based
+// hashes depend on the built-in's accuracy far from 0.
+SHARED_FN real latticeHash(vec3 c) {
+    vec3 q = vec3(fractr(c.x * real(0.1031)), fractr(c.y * real(0.1030)), fractr(c.z * real(0.0973)));
+    real k = dot3(q, vec3(q.y + real(33.33), q.z + real(33.33), q.x + real(33.33)));
+    q = q + vec3(k);
+    return fractr((q.x + q.y) * q.z);
+}
+
+// Trilinear interpolation of the lattice's hashes with the smoothstep fade; mean 1/2.
+SHARED_FN real valueNoise(vec3 x) {
+    vec3 i = vec3(floor(x.x), floor(x.y), floor(x.z));
+    vec3 f = x - i;
+    vec3 u = f * f * (vec3(real(3)) - real(2) * f);
+    real h000 = latticeHash(i);
+    real h100 = latticeHash(i + vec3(real(1), real(0), real(0)));
+    real h010 = latticeHash(i + vec3(real(0), real(1), real(0)));
+    real h110 = latticeHash(i + vec3(real(1), real(1), real(0)));
+    real h001 = latticeHash(i + vec3(real(0), real(0), real(1)));
+    real h101 = latticeHash(i + vec3(real(1), real(0), real(1)));
+    real h011 = latticeHash(i + vec3(real(0), real(1), real(1)));
+    real h111 = latticeHash(i + vec3(real(1), real(1), real(1)));
+    real a = lerpr(lerpr(h000, h100, u.x), lerpr(h010, h110, u.x), u.y);
+    real b = lerpr(lerpr(h001, h101, u.x), lerpr(h011, h111, u.x), u.y);
+    return lerpr(a, b, u.z);
+}
+
+// Noise has no closed-form box filter: an octave of feature size 1 keeps its
+// detail while the footprint is under a quarter of a feature and fades to
+// its mean (1/2) by a whole feature (a documented approximation).
+SHARED_FN real noiseOctave(vec3 x, real w) {
+    return lerpr(valueNoise(x), real(0.5), smoothstepr(real(0.25), real(1), w));
+}
+
+// The share of texture colour at texture-space point x with footprint w.
+SHARED_FN real textureCoverage(int pattern, vec3 x, real w) {
+    if (pattern == TEXTURE_CHECKER) {
+        // the product first: Mesa regroups a chain of products with a constant factor
+        real xy = filteredCheckerWave(x.x, w) * filteredCheckerWave(x.y, w);
+        real xyz = xy * filteredCheckerWave(x.z, w);
+        return real(0.5) - real(0.5) * xyz;
+    }
+    if (pattern == TEXTURE_STRIPES) {
+        return real(0.5) - real(0.5) * filteredCheckerWave(x.y, w);
+    }
+    if (pattern == TEXTURE_NOISE) {
+        real fine = noiseOctave(x * real(2) + vec3(real(17.5)), real(2) * w);
+        return saturate((real(2) * noiseOctave(x, w) + fine) / real(3));
+    }
+    return real(0);
+}
+
+SHARED_FN Material texturedMaterial(Material base, int pattern, vec3 x, real w, vec3 textureColor) {
+    real coverage = textureCoverage(pattern, x, w);
+    Material m = base;
+    m.ambient = lerp3s(base.ambient, textureColor, coverage);
+    m.diffuse = lerp3s(base.diffuse, textureColor, coverage);
+    return m;
+}
