@@ -76,6 +76,15 @@ std::vector<bool> dilate(const std::vector<bool>& edge, int w, int h) {
     return band;
 }
 
+// Both hit, at depths as far apart as an occluding contour: a film over a
+// hole, or a hole onto a farther surface, seen even where the colours happen
+// to match.
+bool depthDiffers(const image::Frame& frame, const image::Frame& reference, size_t i) {
+    if (!covered(frame.coverage[i]) || !covered(reference.coverage[i])) return false;
+    const double a = frame.depth[i], b = reference.depth[i];
+    return std::abs(a - b) > kContourDepthRatio * std::max(a, b);
+}
+
 }  // namespace
 
 ReferenceAgreement compareWithReference(const image::Frame& frame, const image::Frame& reference, bool colourEdges) {
@@ -84,25 +93,32 @@ ReferenceAgreement compareWithReference(const image::Frame& frame, const image::
         throw std::invalid_argument("frame and reference differ in size");
     }
     const std::vector<std::uint8_t> a = image::encodeSrgb8(frame.color), b = image::encodeSrgb8(reference.color);
-    const std::vector<bool> band = dilate(silhouetteEdges(reference, colourEdges ? &b : nullptr), w, h);
-    size_t silhouette = 0, silhouetteMask = 0, interiorError = 0, interiorMask = 0;
+    // Geometry is judged off the geometric outlines only: a colour edge (a
+    // grid line, a shadow boundary) moves no surface, and on a patterned
+    // floor colour edges cover half the image, holes included.
+    const std::vector<bool> outline = dilate(silhouetteEdges(reference, nullptr), w, h);
+    const std::vector<bool> band = colourEdges ? dilate(silhouetteEdges(reference, &b), w, h) : outline;
+    size_t silhouette = 0, silhouetteMask = 0, interiorError = 0, interiorMask = 0, outlinePixels = 0;
     for (size_t i = 0; i < reference.color.pixelCount(); ++i) {
         const bool maskDiffers = std::abs(frame.coverage[i] - reference.coverage[i]) > 0.5f;
+        if (outline[i]) {
+            ++outlinePixels;
+            silhouetteMask += maskDiffers ? 1 : 0;
+        } else {
+            interiorMask += maskDiffers || depthDiffers(frame, reference, i) ? 1 : 0;
+        }
         if (band[i]) {
             ++silhouette;
-            silhouetteMask += maskDiffers ? 1 : 0;
-            continue;
+        } else {
+            interiorError += pixelDifference(a, i, b, i) > 8 ? 1 : 0;
         }
-        interiorError += pixelDifference(a, i, b, i) > 8 ? 1 : 0;
-        interiorMask += maskDiffers ? 1 : 0;
     }
     const double all = static_cast<double>(reference.color.pixelCount());
-    const double interior = std::max(1.0, all - static_cast<double>(silhouette));
     ReferenceAgreement r;
     r.silhouettePercent = 100.0 * static_cast<double>(silhouette) / all;
     r.silhouetteMaskPercent = 100.0 * static_cast<double>(silhouetteMask) / all;
-    r.interiorErrorPercent = 100.0 * static_cast<double>(interiorError) / interior;
-    r.interiorMaskPercent = 100.0 * static_cast<double>(interiorMask) / interior;
+    r.interiorErrorPercent = 100.0 * static_cast<double>(interiorError) / std::max(1.0, all - double(silhouette));
+    r.interiorMaskPercent = 100.0 * static_cast<double>(interiorMask) / std::max(1.0, all - double(outlinePixels));
     return r;
 }
 

@@ -17,11 +17,13 @@ struct ReferenceAgreement {
     double silhouettePercent = 0;      // % of pixels within one pixel of a silhouette (or edge) of the reference
     double silhouetteMaskPercent = 0;  // % of pixels, on silhouettes, whose coverage differs by more than 1/2
     double interiorErrorPercent = 0;   // % of the other pixels whose colour differs by more than 8/255
-    double interiorMaskPercent = 0;    // % of the other pixels whose coverage differs by more than 1/2
+    double interiorMaskPercent = 0;    // % of the pixels off the geometric outlines whose coverage differs by
+                                       // more than 1/2 or whose depth differs like an occluding contour
 };
 
-// `colourEdges`: also count apart pixels within one pixel of a colour edge
-// of the reference (a neighbour more than 8/255 away). Throws
+// `colourEdges`: also count apart, for the colour error only, pixels within
+// one pixel of a colour edge of the reference (a neighbour more than 8/255
+// away); coverage and depth are judged off the geometric outlines alone. Throws
 // std::invalid_argument when the sizes differ.
 ReferenceAgreement compareWithReference(const image::Frame& frame, const image::Frame& reference, bool colourEdges);
 
