@@ -51,6 +51,7 @@ struct TraceState {
     int depth;          // bounces before this ray: 0 for a primary ray (ray_tree.glsl)
     bool inside;        // the ray travels inside a solid: it marches on the negated field
     real pathLength;    // distance from the eye to this ray's origin, for the footprint epsilon
+    real enterSlope;    // PHASE_ENTER: the steepest rate of change of the field along the ray so far
 };
 
 // A ray of the tree `depth` bounces from the eye, starting pathLength from it.
@@ -59,7 +60,7 @@ SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLen
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(0)), depth,
-                      inside, pathLength);
+                      inside, pathLength, real(0));
 }
 
 SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, real(0)); }
@@ -72,9 +73,12 @@ SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, r
 const real LEAVE_MIN_STEP = real(1e-3);
 // How deep, as a fraction of the hit epsilon, a ray must get into a feature
 // thinner than epsilon for it to count (PHASE_ENTER): slivers thinner than
-// about twice this, a flush cutter's zero-thickness face among them, are not
+// about three times this, a flush cutter's zero-thickness face among them, are not
 // surfaces. Float noise on a flush face is far below it.
 const real ENTER_DEPTH = real(0.015625);
+// How far, as a fraction of the hit epsilon, the normal's probe goes through
+// the surface: inside any surface whose radius of curvature exceeds epsilon.
+const real NORMAL_PROBE = real(0.5);
 // A shadow ray takes at most this many samples, however slowly its field
 // steps (8 lights x 4097 stays well under llvmpipe's 65535 back-edges).
 const int SHADOW_SAMPLE_CAP = 4096;
@@ -118,6 +122,9 @@ SHARED_FN vec3 shadowOrigin(TraceState s) {
 SHARED_FN vec3 tracePoint(TraceState s, Light light, TraceSettings settings) {
     if (s.phase == PHASE_MARCH || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER) {
         return s.rayOrigin + s.rayDirection * s.t;
+    }
+    if (s.phase == PHASE_NORMAL && s.counter == 4) {
+        return s.hitPoint - normalize3(s.normalSum) * (max(s.occlusion, real(0)) + NORMAL_PROBE * s.hitEpsilon);
     }
     if (s.phase == PHASE_NORMAL) {
         return s.hitPoint + tetrahedronVertex(s.counter) * s.hitEpsilon;
@@ -329,17 +336,50 @@ SHARED_FN TraceState advanceEnter(TraceState s, Sample field, TraceSettings sett
         return beginNormal(s, field, epsilon);
     }
     s.steps = s.steps + 1;
-    if (field.d > epsilon) {
-        s.phase = PHASE_MARCH;
+    if (s.marchStep > real(0)) {
+        s.enterSlope = max(s.enterSlope, abs(field.d - s.lastDistance) / s.marchStep);
     }
-    s.t = s.t + max(field.step, depth);
+    // A feature at least 3 depth thick, crossed where the field changes at
+    // this rate along the ray, stays below -depth over at least
+    // depth / slope: steps that long still find it, and a ray grazing a
+    // sliver's plane (the field near 0 over a long stretch) crosses it in
+    // about 2 / ENTER_DEPTH steps instead of running out of them.
+    real step = max(field.step, depth / max(s.enterSlope, ENTER_DEPTH));
+    s.t = s.t + step;
     s.lastDistance = field.d;
     s.marchRadius = real(0);  // plain steps: no relaxed step to check
-    s.marchStep = real(0);
+    s.marchStep = step;       // the step the next slope is measured over
+    if (field.d > epsilon) {
+        s.phase = PHASE_MARCH;
+        s.marchStep = real(0);
+    }
     return endMarchIfSpent(s, settings);
 }
 
+// A hit none of whose samples is inside is on a feature thinner than
+// epsilon: it counts only where the ray gets into it (PHASE_ENTER). A ray
+// out of steps keeps its hit.
+SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
+    bool thin = s.lastDistance >= -ENTER_DEPTH * s.hitEpsilon;
+    if (thin && s.steps < settings.maxSteps) {
+        s.hit = false;
+        s.phase = PHASE_ENTER;
+        s.steps = s.steps + s.counter;  // the normal's samples count against the budget that bounds the loop
+        s.enterSlope = real(0);
+        s.marchStep = real(0);  // no step yet to measure a slope over
+        return endMarchIfSpent(s, settings);
+    }
+    s.normal = normalize3(s.normalSum);
+    return beginOcclusion(s, settings);
+}
+
 SHARED_FN TraceState advanceNormal(TraceState s, Sample field, TraceSettings settings) {
+    if (s.counter == 4) {
+        // the probe through the surface (below)
+        s.lastDistance = min(s.lastDistance, field.d);
+        s.counter = 5;
+        return finishNormal(s, settings);
+    }
     s.normalSum = s.normalSum + tetrahedronVertex(s.counter) * field.d;
     s.lastDistance = min(s.lastDistance, field.d);
     s.counter = s.counter + 1;
@@ -353,19 +393,18 @@ SHARED_FN TraceState advanceNormal(TraceState s, Sample field, TraceSettings set
     // a feature thinner than epsilon (a blade, a shell) or a sliver the field
     // only touches (a cutter flush with the face it cuts leaves one of zero
     // thickness, seen as a striped lid or a membrane). Such a hit counts only
-    // where the field goes negative (PHASE_ENTER). A ray out of steps keeps
-    // its hit.
+    // where the field goes negative (PHASE_ENTER). The same V seen from
+    // one side only (h near epsilon, as a ray grazing a sliver's plane first
+    // gets within epsilon of it) is a linear field around the samples: then
+    // one more sample, the probe, goes through the surface along the normal,
+    // NORMAL_PROBE epsilon beyond it, and the hit counts only if the probe is
+    // inside.
     real h = max(s.occlusion, real(0));
     bool vShaped = length3(s.normalSum) < real(2.5) * s.hitEpsilon + real(1.5) * h;
-    bool thin = vShaped && s.lastDistance >= -ENTER_DEPTH * s.hitEpsilon;
-    if (thin && s.steps < settings.maxSteps) {
-        s.hit = false;
-        s.phase = PHASE_ENTER;
-        s.steps = s.steps + 4;  // the normal's samples count against the budget that bounds the loop
-        return endMarchIfSpent(s, settings);
+    if (!vShaped && s.lastDistance >= -ENTER_DEPTH * s.hitEpsilon) {
+        return s;  // counter 4: the probe
     }
-    s.normal = normalize3(s.normalSum);
-    return beginOcclusion(s, settings);
+    return finishNormal(s, settings);
 }
 
 // Normal-sampled ambient occlusion (Evans 2006; thesis, Algorithm 15):
@@ -491,8 +530,8 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
 
 // Worst case of loop iterations for one sample: the GLSL backend checks it against
 // llvmpipe's loop limiter. The march's steps (normal samples of a thin hit
-// among them) stop at maxSteps, 4 over at most, then 4 normal samples.
+// among them) stop at maxSteps, 5 over at most, then 5 normal samples.
 SHARED_FN int traceIterationBound(TraceSettings settings) {
     int shadowSamples = settings.shadowMode == SHADOW_NONE ? 0 : SHADOW_SAMPLE_CAP;
-    return settings.maxSteps + 8 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
+    return settings.maxSteps + 10 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
 }
