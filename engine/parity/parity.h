@@ -81,7 +81,7 @@ ParityResult measureParity(const scene::Scene& scene, render::Backend& cpu, rend
 // Limits of the hard-case gate, on ReferenceAgreement's figures.
 struct HardGateThresholds {
     double interiorErrorPercent = 0.5;   // pixels off the silhouettes beyond 8/255 of the double build
-    double interiorMaskPercent = 0.1;    // holes and films off the silhouettes
+    double interiorMaskPercent = 0.1;    // holes and films off the geometric outlines, by coverage or depth
     double silhouetteMaskPercent = 1.5;  // outlines moved by more than a pixel
 };
 inline constexpr HardGateThresholds kHardGateThresholds{};
