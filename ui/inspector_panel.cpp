@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/field_help.h"
 #include "ui/formula_field.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
@@ -118,6 +119,7 @@ void fieldWidget(Editor& editor, UiState& ui, const NodePath& path, const FieldS
         drawFormulaField(editor, ui, path, field, std::get<std::string>(value));
         break;
     }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", fieldTooltip(field).c_str());
 }
 
 // With no node selected: the scene's own name and description.

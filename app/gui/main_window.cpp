@@ -176,6 +176,9 @@ constexpr const char* kDocs[][2] = {
     {"docs/expression-language.md", "Formulas of sdf nodes"},
     {"docs/implicit-surfaces.md", "Implicit and polynomial surfaces"},
     {"docs/rendering.md", "Rendering and the two backends"},
+    {"docs/large-scenes.md", "Large scenes and spatial pruning"},
+    {"docs/speed-vs-error.md", "Quality settings: speed against error"},
+    {"README.md", "Commands (render, mesh, compare, ...)"},
 };
 
 void menuBar(AppState& app) {

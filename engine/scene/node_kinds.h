@@ -77,6 +77,7 @@ struct FieldSpec {
     FieldValue defaultValue;
     std::span<const std::string_view> choices;  // Choice fields only
     std::string_view unit;                       // for documentation and the editor
+    std::string_view help;                       // one sentence: the inspector's tooltip
 };
 
 struct KindSpec {
