@@ -71,13 +71,9 @@ void BM_GlDefault1280x720(benchmark::State& state) {
 }
 BENCHMARK(BM_GlDefault1280x720)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
-// What mirrors and glass cost: a scene with its ray tree (range 1) and the
-// same scene with max_depth 0 (range 0: no tree compiled, primary rays only),
-// 480x270 AA 1, CPU (2 threads) and GL, in one run.
-void rayTreeCost(benchmark::State& state, const char* file, bool gl) {
-    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/" + file);
-    if (state.range(0) == 0) s.render.maxDepth = 0;
-    program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
+// Renders `p` once per benchmark iteration: CPU with 2 threads, or GL (the
+// program built before the timed loop).
+void renderEachIteration(benchmark::State& state, const program::Program& p, bool gl) {
     if (!gl) {
         for (auto _ : state) benchmark::DoNotOptimize(cpu::renderCpu(p, {.threads = 2}));
         return;
@@ -85,6 +81,16 @@ void rayTreeCost(benchmark::State& state, const char* file, bool gl) {
     gl::GlRenderer renderer(context().gl());
     renderer.prepare(p);
     for (auto _ : state) benchmark::DoNotOptimize(renderer.render(p));
+}
+
+// What mirrors and glass cost: a scene with its ray tree (range 1) and the
+// same scene with max_depth 0 (range 0: no tree compiled, primary rays only),
+// 480x270 AA 1, CPU (2 threads) and GL, in one run.
+void rayTreeCost(benchmark::State& state, const char* file, bool gl) {
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/" + file);
+    if (state.range(0) == 0) s.render.maxDepth = 0;
+    program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
+    renderEachIteration(state, p, gl);
 }
 BENCHMARK_CAPTURE(rayTreeCost, mirrors_cpu, "tutorial/08_mirrors.json", false)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
@@ -105,13 +111,7 @@ void groundFilterCost(benchmark::State& state, bool gl) {
             if (in.op == program::Opcode::Ground) p.params[static_cast<size_t>(in.param)].z = 0.0;
         }
     }
-    if (!gl) {
-        for (auto _ : state) benchmark::DoNotOptimize(cpu::renderCpu(p, {.threads = 2}));
-        return;
-    }
-    gl::GlRenderer renderer(context().gl());
-    renderer.prepare(p);
-    for (auto _ : state) benchmark::DoNotOptimize(renderer.render(p));
+    renderEachIteration(state, p, gl);
 }
 BENCHMARK_CAPTURE(groundFilterCost, cpu, false)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
