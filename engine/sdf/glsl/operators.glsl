@@ -62,14 +62,25 @@ SHARED_FN Blend sminPower(real a, real b, real k) {
     return Blend(d, exp2((s + real(1)) * log2(d / b)));
 }
 
-// Root: (a + b - sqrt((a-b)^2 + c)) / 2 with c = k^2 / 4.
+// Root: (a + b - sqrt((a-b)^2 + c)) / 2 with c = k^2 / 4, written as
+// min(a,b) - c / (2 (root + |a-b|)) with root = sqrt((a-b)^2 + c): a + b - root
+// cancels completely when one operand is huge (an empty group's 1e10 against
+// a surface at 1 gave 0 in float, and every ray stalled). The weight of the
+// larger operand, (1 - |a-b| / root) / 2, likewise as c / (2 root (root + |a-b|)).
 SHARED_FN Blend sminRoot(real a, real b, real k) {
     real c = k * k * real(0.25);
-    real root = sqrt((a - b) * (a - b) + c);
+    real gap = abs(a - b);
+    real root = sqrt(gap * gap + c);
     if (!(root > real(0))) {
         return hardMin(a, b);
     }
-    return Blend(real(0.5) * (a + b - root), real(0.5) - real(0.5) * (b - a) / root);
+    real sum = root + gap;
+    real d = min(a, b) - real(0.5) * c / sum;
+    real wOfLarger = real(0.5) * c / (root * sum);
+    if (a <= b) {
+        return Blend(d, wOfLarger);
+    }
+    return Blend(d, real(1) - wOfLarger);
 }
 
 // Variant codes, fixed numbers shared with the compiler (engine/program/opcodes.h).
