@@ -4,6 +4,9 @@
 #include "algebra/gb_engine.h"
 #include "algebra/gb_fglm.h"
 
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+
 #include <stdexcept>
 
 namespace sdfwb::algebra::gb {
@@ -225,29 +228,26 @@ std::uint32_t previous_prime(std::uint32_t below) {
 }
 
 bool rational_reconstruction(const mpz_class& a, const mpz_class& modulus, mpq_class& out) {
-  // Extended Euclid on (m, a) stopped at the first remainder below
-  // sqrt(m/2) (Wang's algorithm).
-  mpz_class bound;
-  mpz_class half = modulus / 2;
-  mpz_sqrt(bound.get_mpz_t(), half.get_mpz_t());
-  mpz_class r0 = modulus, r1 = a % modulus, t0 = 0, t1 = 1, q, tmp;
-  if (r1 < 0) r1 += modulus;
-  while (r1 > bound) {
-    mpz_fdiv_q(q.get_mpz_t(), r0.get_mpz_t(), r1.get_mpz_t());
-    tmp = r0 - q * r1;
-    r0 = r1;
-    r1 = tmp;
-    tmp = t0 - q * t1;
-    t0 = t1;
-    t1 = tmp;
+  // FLINT's fmpq_reconstruct_fmpz (half-gcd for large moduli) with the
+  // balanced bounds |n|, d <= sqrt(m/2): the lift spent a fifth of Katsura-6
+  // in a plain Euclid over mpz_class temporaries.
+  fmpz_t residue, m;
+  fmpq_t q;
+  fmpz_init(residue);
+  fmpz_init(m);
+  fmpq_init(q);
+  fmpz_set_mpz(m, modulus.get_mpz_t());
+  fmpz_set_mpz(residue, a.get_mpz_t());
+  fmpz_mod(residue, residue, m);
+  const bool ok = fmpq_reconstruct_fmpz(q, residue, m) != 0;
+  if (ok) {
+    fmpz_get_mpz(out.get_num_mpz_t(), fmpq_numref(q));
+    fmpz_get_mpz(out.get_den_mpz_t(), fmpq_denref(q));
   }
-  if (abs(t1) > bound || t1 == 0) return false;
-  mpz_class g;
-  mpz_gcd(g.get_mpz_t(), r1.get_mpz_t(), t1.get_mpz_t());
-  if (g != 1) return false;
-  out = mpq_class(r1, t1);
-  out.canonicalize();
-  return true;
+  fmpq_clear(q);
+  fmpz_clear(m);
+  fmpz_clear(residue);
+  return ok;
 }
 
 namespace {

@@ -65,6 +65,7 @@ void register_groebner(const std::string& name, std::function<Ideal()> make, con
       wall = result.seconds;
       if (!result.ok()) state.SkipWithError(result.message.c_str());
       state.counters["basis"] = static_cast<double>(result.basis.size());
+      state.counters["primes"] = static_cast<double>(result.stats.primes);
       if (singular.ok && result.basis != singular.basis) state.SkipWithError("bases differ from Singular's");
     }
     report(state, singular, wall, cpu);
