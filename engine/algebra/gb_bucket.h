@@ -51,8 +51,8 @@ class Bucket {
     product.coeffs.resize(p.size() - from);
     for (std::size_t i = from; i < p.size(); ++i) {
       layout_.multiply(product.mons.data() + (i - from) * stride, p.mon(i, stride), shift);
-      domain_.mul(product.coeffs[i - from], p.coeffs[i], factor);
     }
+    domain_.mul_all(product.coeffs.data(), p.coeffs.data() + from, p.size() - from, factor);
     add(std::move(product));
   }
 
@@ -158,9 +158,11 @@ class Bucket {
     Poly<Coeff>& a = level.poly;
     Poly<Coeff>& out = scratch_;
     // Sized once for the worst case and trimmed after: cheaper than growing
-    // the monomial array term by term.
+    // the monomial array term by term. The scratch keeps its monomial words
+    // between merges (only its coefficients are cleared), so only growth is
+    // zero-filled.
     const std::size_t most = live(i) + p.size();
-    out.mons.resize(most * stride);
+    if (out.mons.size() < most * stride) out.mons.resize(most * stride);
     out.coeffs.clear();
     out.coeffs.reserve(most);
     Word* write = out.mons.data();
@@ -190,7 +192,7 @@ class Bucket {
     out.mons.resize(out.coeffs.size() * stride);
     std::swap(a, out);
     level.head = 0;
-    out.clear();
+    out.coeffs.clear();
     release(std::move(p));
   }
 
@@ -203,9 +205,12 @@ class Bucket {
     pool_.pop_back();
     return p;
   }
+  // A pooled polynomial keeps the size of its monomial array (stale words,
+  // overwritten by whoever takes it: add_multiple resizes, take assigns or
+  // swaps), so that reuse does not zero-fill it again.
   void release(Poly<Coeff>&& p) {
     if (pool_.size() >= kPoolSize || p.mons.capacity() == 0) return;
-    p.clear();
+    p.coeffs.clear();
     pool_.push_back(std::move(p));
   }
 

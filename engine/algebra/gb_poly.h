@@ -56,6 +56,10 @@ struct IntegerDomain {
     mpz_mul(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
   }
   static void negate(Coeff& a) { mpz_neg(a.get_mpz_t(), a.get_mpz_t()); }
+  /// out[k] = in[k] * factor for k < n.
+  static void mul_all(Coeff* out, const Coeff* in, std::size_t n, const Coeff& factor) {
+    for (std::size_t k = 0; k < n; ++k) mul(out[k], in[k], factor);
+  }
   /// scale = a/g, multiplier = c/g with g = gcd(a, c), sign moved into scale
   /// so that scale > 0: then p*scale - multiplier*(reducer) cancels c.
   static void cancel_factors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
@@ -79,9 +83,28 @@ struct ModularDomain {
 
   static bool is_zero(Coeff c) { return c == 0; }
   static bool is_one(Coeff c) { return c == 1; }
-  void add(Coeff& a, Coeff b) const { a = (a + b) % p; }
+  // a, b < p < 2^31: the sum fits and needs at most one subtraction.
+  void add(Coeff& a, Coeff b) const {
+    a += b;
+    if (a >= p) a -= p;
+  }
   void mul(Coeff& out, Coeff a, Coeff b) const {
     out = static_cast<Coeff>(static_cast<std::uint64_t>(a) * b % p);
+  }
+  /// out[k] = in[k] * factor for k < n, by Shoup's precomputed quotient
+  /// (w' = floor(factor * 2^32 / p)): a multiplication, a shift and one
+  /// correction per term instead of a 64-bit division. With in[k], factor
+  /// < p < 2^31, in[k] * factor - q * p lies in [0, 2p).
+  void mul_all(Coeff* out, const Coeff* in, std::size_t n, Coeff factor) const {
+    const std::uint64_t w = factor;
+    const std::uint64_t w_shoup = (w << 32) / p;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint64_t a = in[k];
+      const std::uint64_t q = (a * w_shoup) >> 32;
+      std::uint64_t r = a * w - q * p;
+      if (r >= p) r -= p;
+      out[k] = static_cast<Coeff>(r);
+    }
   }
   void negate(Coeff& a) const { a = a == 0 ? 0 : p - a; }
   Coeff inverse(Coeff a) const;
