@@ -12,14 +12,41 @@
 #include <gmpxx.h>
 
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::algebra::gb {
 
+/// An allocator whose value-less construct leaves the words uninitialized:
+/// the engine resizes monomial arrays and then writes every word, and the
+/// zero-fill of vector::resize was a tenth of a modular Katsura run.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// Packed monomials, `stride` words each.
+using Monomials = std::vector<Word, UninitializedAllocator<Word>>;
+
 /// Terms in decreasing order of their monomials, no zero coefficients.
 template <class Coeff>
 struct Poly {
-  std::vector<Word> mons;  // size() * stride words
+  Monomials mons;  // size() * stride words
   std::vector<Coeff> coeffs;
   std::uint32_t sugar = 0;
 
