@@ -8,15 +8,6 @@ using scene::Node;
 using scene::NodeKind;
 using json = nlohmann::ordered_json;
 
-Problems validateScene(const scene::Scene& scene) {
-    try {
-        scene::sceneFromJson(scene::sceneToJson(scene));
-    } catch (const scene::SceneError& error) {
-        return error.problems();
-    }
-    return {};
-}
-
 Editor::Editor(scene::Scene scene) : scene_(std::move(scene)) {}
 
 void Editor::select(std::optional<NodePath> path) {
@@ -30,7 +21,7 @@ const Node* Editor::selectedNode() const { return selection_ ? findNode(scene_.r
 
 Problems Editor::commit(std::string_view label, scene::Scene candidate, std::optional<NodePath> selection,
                         std::string_view mergeKey) {
-    Problems problems = validateScene(candidate);
+    Problems problems = scene::validateScene(candidate, &formulaVerdicts_);
     if (!problems.empty()) {
         return problems;
     }
@@ -302,7 +293,7 @@ Problems Editor::setView(const scene::Camera& camera) {
     // the loader's camera rules on a scene that holds nothing else
     scene::Scene probe;
     probe.camera = camera;
-    if (Problems problems = validateScene(probe); !problems.empty()) return problems;
+    if (Problems problems = scene::validateScene(probe); !problems.empty()) return problems;
     if (scene_.camera != camera) {
         scene_.camera = camera;
         ++revision_;

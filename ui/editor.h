@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
+#include "scene/scene_validation.h"
 #include "ui/node_path.h"
 
 namespace sdfwb::ui {
@@ -128,9 +129,7 @@ private:
     std::uint64_t stateId_ = 1;
     std::uint64_t nextStateId_ = 2;
     std::uint64_t savedStateId_ = 1;
+    scene::FormulaVerdicts formulaVerdicts_;  // every commit validates the whole scene
 };
-
-// The loader's problems for `scene` (empty when it is valid).
-Problems validateScene(const scene::Scene& scene);
 
 }  // namespace sdfwb::ui

@@ -4,12 +4,13 @@
 #include <optional>
 #include <set>
 #include <span>
-#include <sstream>
 #include <type_traits>
 
 #include "io/atomic_file.h"
 #include "io/quoted_text.h"
 #include "scene/json_text.h"
+#include "scene/scene_validation.h"
+#include "scene/setting_checks.h"
 #include "scene/settings_table.h"
 
 namespace sdfwb::scene {
@@ -21,12 +22,6 @@ SceneError::SceneError(std::vector<std::string> problems)
     : std::runtime_error(problems.empty() ? "invalid scene" : problems.front()), problems_(std::move(problems)) {}
 
 namespace {
-
-std::string describe(double v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-}
 
 // Collects problems while reading; each reader call takes the JSON path of its value.
 class Reader {
@@ -51,45 +46,6 @@ public:
         return true;
     }
 
-    void numberAtLeast(const json& value, const std::string& path, double minimum, bool strict, double& out) {
-        double v = 0;
-        if (!number(value, path, v)) {
-            return;
-        }
-        if (strict ? !(v > minimum) : !(v >= minimum)) {
-            fail(path, std::string("must be ") + (strict ? "> " : ">= ") + describe(minimum) + " (got " + describe(v) + ")");
-            return;
-        }
-        out = v;
-    }
-
-    void numberBetween(const json& value, const std::string& path, double minimum, double maximum,
-                       const std::string& unit, double& out) {
-        double v = 0;
-        if (!number(value, path, v)) {
-            return;
-        }
-        if (!(v >= minimum && v <= maximum)) {
-            fail(path, "must be from " + describe(minimum) + " to " + describe(maximum) + unit + " (got " + describe(v) +
-                           ")");
-            return;
-        }
-        out = v;
-    }
-
-    void integer(const json& value, const std::string& path, int minimum, int maximum, int& out) {
-        double v = 0;
-        if (!number(value, path, v)) {
-            return;
-        }
-        if (v != std::floor(v) || v < minimum || v > maximum) {
-            fail(path, "must be a whole number from " + std::to_string(minimum) + " to " + std::to_string(maximum) +
-                           " (got " + describe(v) + ")");
-            return;
-        }
-        out = static_cast<int>(v);
-    }
-
     bool vec3(const json& value, const std::string& path, dvec3& out) {
         if (!value.is_array() || value.size() != 3) {
             fail(path, "must be an array of 3 numbers");
@@ -103,18 +59,6 @@ public:
         }
         out = v;
         return true;
-    }
-
-    void colour(const json& value, const std::string& path, dvec3& out) {
-        dvec3 v;
-        if (!vec3(value, path, v)) {
-            return;
-        }
-        if (v.x < 0 || v.y < 0 || v.z < 0) {
-            fail(path, "colour components must be >= 0");
-            return;
-        }
-        out = v;
     }
 
     void flag(const json& value, const std::string& path, bool& out) {
@@ -207,31 +151,22 @@ private:
 // ---- settings from the tables of scene/settings_table.h ----
 template <typename Owner>
 void readSetting(Reader& reader, const Setting<Owner>& row, const json& value, const std::string& path, Owner& owner) {
-    std::string unit = row.unit.empty() ? "" : " " + std::string(row.unit);
+    // Reads the value's type here and applies the row's rule (scene/setting_checks.h) to what was read.
+    auto checked = [&](const std::string& reason) {
+        if (!reason.empty()) reader.fail(path, reason);
+        return reason.empty();
+    };
     switch (row.type) {
-    case SettingType::Integer:
-        reader.integer(value, path, static_cast<int>(row.minimum), static_cast<int>(row.maximum),
-                       owner.*std::get<int Owner::*>(row.member));
+    case SettingType::Integer: {
+        double v = 0;
+        if (reader.number(value, path, v) && checked(integerProblem(row, v))) {
+            owner.*std::get<int Owner::*>(row.member) = static_cast<int>(v);
+        }
         return;
+    }
     case SettingType::Real: {
-        double& out = owner.*std::get<double Owner::*>(row.member);
-        switch (row.range) {
-        case RealRange::Any: reader.number(value, path, out); return;
-        case RealRange::Positive: reader.numberAtLeast(value, path, 0, true, out); return;
-        case RealRange::NonNegative: reader.numberAtLeast(value, path, 0, false, out); return;
-        case RealRange::Closed: reader.numberBetween(value, path, row.minimum, row.maximum, unit, out); return;
-        case RealRange::Open: {
-            double v = 0;
-            if (!reader.number(value, path, v)) return;
-            if (!(v > row.minimum && v < row.maximum)) {
-                reader.fail(path, "must be strictly between " + describe(row.minimum) + " and " + describe(row.maximum) +
-                                      unit + " (got " + describe(v) + ")");
-                return;
-            }
-            out = v;
-            return;
-        }
-        }
+        double v = 0;
+        if (reader.number(value, path, v) && checked(realProblem(row, v))) owner.*std::get<double Owner::*>(row.member) = v;
         return;
     }
     case SettingType::Choice: {
@@ -240,16 +175,15 @@ void readSetting(Reader& reader, const Setting<Owner>& row, const json& value, c
         if (reader.choice(value, path, row.choices, index)) access.set(owner, index);
         return;
     }
-    case SettingType::Colour: reader.colour(value, path, owner.*std::get<dvec3 Owner::*>(row.member)); return;
-    case SettingType::Vector: reader.vec3(value, path, owner.*std::get<dvec3 Owner::*>(row.member)); return;
+    case SettingType::Colour:
+    case SettingType::Vector:
     case SettingType::Direction: {
-        dvec3 d;
-        if (!reader.vec3(value, path, d)) return;
-        if (d == dvec3(0.0)) {
-            reader.fail(path, "must not be the zero vector");
-            return;
-        }
-        owner.*std::get<dvec3 Owner::*>(row.member) = d;
+        dvec3 v;
+        if (!reader.vec3(value, path, v)) return;
+        std::string reason = row.type == SettingType::Colour      ? colourProblem(v)
+                             : row.type == SettingType::Direction ? directionProblem(v)
+                                                                  : "";
+        if (checked(reason)) owner.*std::get<dvec3 Owner::*>(row.member) = v;
         return;
     }
     case SettingType::Flag: reader.flag(value, path, owner.*std::get<bool Owner::*>(row.member)); return;
@@ -392,16 +326,8 @@ std::optional<PendingNode> beginNode(Reader& reader, const json& value, const st
 Node finishNode(Reader& reader, PendingNode& pending) {
     const KindSpec& spec = *pending.spec;
     pending.object.finish(spec.name);
-    for (const auto& [field, reason] : checkNodeFields(spec, pending.node.fields)) {
+    for (const auto& [field, reason] : nodeStructureProblems(spec, pending.node)) {
         reader.fail(pending.path + "." + field, reason);
-    }
-    int count = static_cast<int>(pending.node.children.size());
-    if (count < spec.minChildren || (spec.maxChildren >= 0 && count > spec.maxChildren)) {
-        std::string expected = spec.minChildren == spec.maxChildren ? "exactly " + std::to_string(spec.minChildren)
-                                                                    : "at least " + std::to_string(spec.minChildren);
-        reader.fail(pending.path + ".children", std::string(spec.name) + " needs " + expected + " child" +
-                                                    (spec.minChildren == 1 && spec.maxChildren == 1 ? "" : "ren") +
-                                                    " (got " + std::to_string(count) + ")");
     }
     return std::move(pending.node);
 }
@@ -477,24 +403,7 @@ Material readMaterial(Reader& reader, const json& value, const std::string& path
     ObjectReader object(reader, value, path);
     readSettings(reader, object, materialSettings(), material);
     object.finish("material");
-    if (material.name.empty() && object.valid()) {
-        reader.fail(path + ".name", "a material needs a non-empty name");
-    }
     return material;
-}
-
-void checkMaterialReferences(Reader& reader, const Scene& scene, const Node& node, const std::string& path) {
-    const KindSpec& spec = kindSpec(node.kind);
-    int index = fieldIndex(spec, "material");
-    if (index >= 0) {
-        const std::string& name = std::get<std::string>(node.fields[static_cast<size_t>(index)]);
-        if (!name.empty() && !scene.findMaterial(name)) {
-            reader.fail(path + ".material", "no material named " + io::quoted(name) + " in materials");
-        }
-    }
-    for (size_t i = 0; i < node.children.size(); ++i) {
-        checkMaterialReferences(reader, scene, node.children[i], path + ".children[" + std::to_string(i) + "]");
-    }
 }
 
 // Versions newer than this build cannot be read; older ones are migrated step by
@@ -554,9 +463,7 @@ Scene sceneFromJson(const json& value) {
             reader.fail(p, "must be an array of lights");
             return;
         }
-        if (v.size() > static_cast<size_t>(kMaxLights)) {
-            reader.fail(p, "at most " + std::to_string(kMaxLights) + " lights (got " + std::to_string(v.size()) + ")");
-        }
+        if (std::string reason = lightCountProblem(v.size()); !reason.empty()) reader.fail(p, reason);
         scene.lights.clear();
         for (size_t i = 0; i < v.size(); ++i) {
             scene.lights.push_back(readLight(reader, v[i], p + "[" + std::to_string(i) + "]"));
@@ -571,19 +478,17 @@ Scene sceneFromJson(const json& value) {
         for (size_t i = 0; i < v.size(); ++i) {
             std::string itemPath = p + "[" + std::to_string(i) + "]";
             Material m = readMaterial(reader, v[i], itemPath);
-            if (!m.name.empty() && !names.insert(m.name).second) {
-                reader.fail(itemPath + ".name", "duplicate material name " + io::quoted(m.name));
+            if (v[i].is_object()) {
+                if (std::string reason = materialNameProblem(m.name, names); !reason.empty()) {
+                    reader.fail(itemPath + ".name", reason);
+                }
             }
             scene.materials.push_back(std::move(m));
         }
     });
     object.member("root", [&](const json& v, const std::string& p) { scene.root = readNode(reader, v, p); });
     object.finish("a scene");
-    checkMaterialReferences(reader, scene, scene.root, "root");
-    if (!scene.environment.ground.material.empty() && !scene.findMaterial(scene.environment.ground.material)) {
-        reader.fail("environment.ground.material",
-                    "no material named " + io::quoted(scene.environment.ground.material) + " in materials");
-    }
+    for (std::string& problem : materialReferenceProblems(scene)) reader.problems.push_back(std::move(problem));
     if (!reader.problems.empty()) {
         throw SceneError(reader.problems);
     }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
+#include "scene/scene_validation.h"
 #include "support/source_tree.h"
 #include "ui/editor.h"
 
@@ -76,7 +77,7 @@ TEST(EditorTest, DeleteTakesEveryWrapperItEmptiesInOneStep) {
     EXPECT_TRUE(editor.remove({1, 0, 0}).empty());
     EXPECT_EQ(editor.undoLabel(), "Delete box and 2 wrappers");
     ASSERT_EQ(editor.scene().root.children.size(), 1u);
-    EXPECT_TRUE(validateScene(editor.scene()).empty());
+    EXPECT_TRUE(scene::validateScene(editor.scene()).empty());
     ASSERT_TRUE(editor.undo());
     EXPECT_EQ(editor.scene(), defaultScene());
     // a root wrapper left empty becomes an empty union

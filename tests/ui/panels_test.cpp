@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "scene/scene_json.h"
+#include "scene/scene_validation.h"
 #include "support/headless_imgui.h"
 #include "support/source_tree.h"
 #include "ui/panels.h"
@@ -46,7 +47,7 @@ scene::Scene everyKind() {
 
 TEST_F(PanelsTest, EveryNodeKindDrawsWithoutEditing) {
     Editor editor(everyKind());
-    ASSERT_TRUE(validateScene(editor.scene()).empty());
+    ASSERT_TRUE(scene::validateScene(editor.scene()).empty());
     UiState ui;
     auto revision = editor.revision();
     frame(editor, ui);
