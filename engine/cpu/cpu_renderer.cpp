@@ -26,7 +26,7 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
 
     const int width = program.width, height = program.height, aa = program.aa;
     const std::vector<render::TileRect> tiles =
-        render::tileGrid(width, height, control.tileSize > 0 ? control.tileSize : kDefaultTileSize);
+        render::tilesToRender(width, height, control.region, control.tileSize > 0 ? control.tileSize : kDefaultTileSize);
     const int tilesTotal = static_cast<int>(tiles.size());
     std::atomic<int> tilesDone{0};
     std::atomic<bool> cancelled{false};
@@ -73,15 +73,11 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
         if (control.progress) control.progress(done, tilesTotal);
     };
 
-    int threads = control.threads > 0 ? control.threads : tbb::this_task_arena::max_concurrency();
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tilesTotal, 1),
-                          [&](const tbb::blocked_range<int>& range) {
-                              for (int t = range.begin(); t != range.end(); ++t) renderTile(tiles[t]);
-                          },
-                          tbb::simple_partitioner());
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, tilesTotal, 1),
+                      [&](const tbb::blocked_range<int>& range) {
+                          for (int t = range.begin(); t != range.end(); ++t) renderTile(tiles[t]);
+                      },
+                      tbb::simple_partitioner());
     return !cancelled.load();
 }
 
@@ -89,10 +85,16 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
 
 bool renderCpuTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
                     const std::function<void(const render::TileRect&)>& onTile) {
-    if (control.precision == render::Precision::Double) {
-        return renderTiles<f64::Kernel>(program, control, frame, onTile);
-    }
-    return renderTiles<f32::Kernel>(program, control, frame, onTile);
+    // The whole render in one arena of the caller's thread count: the tiles and
+    // the pruning grid the kernel builds first (its own parallel loop) alike.
+    int threads = control.threads > 0 ? control.threads : tbb::this_task_arena::max_concurrency();
+    tbb::task_arena arena(threads);
+    return arena.execute([&] {
+        if (control.precision == render::Precision::Double) {
+            return renderTiles<f64::Kernel>(program, control, frame, onTile);
+        }
+        return renderTiles<f32::Kernel>(program, control, frame, onTile);
+    });
 }
 
 render::RenderOutcome renderCpu(const program::Program& program, const render::RenderControl& control) {

@@ -63,8 +63,7 @@ render::RenderOutcome GlBackend::render(const program::Program& program, const r
 
 std::unique_ptr<render::ProgressiveRender> GlBackend::startProgressive(program::Program program,
                                                                        const render::RenderControl& control) {
-    return std::make_unique<GlProgressiveRender>(renderer_, std::move(program),
-                                                 control.tileSize > 0 ? control.tileSize : kProgressiveTileSize);
+    return std::make_unique<GlProgressiveRender>(renderer_, std::move(program), control, kProgressiveTileSize);
 }
 
 }  // namespace sdfwb::gl

@@ -206,7 +206,7 @@ void GlRenderer::setDrawState(bool on) {
 }
 
 render::RenderOutcome GlRenderer::render(const program::Program& program, const render::RenderControl& control) {
-    GlProgressiveRender job(*this, program, control.tileSize > 0 ? control.tileSize : kDefaultTileSize);
+    GlProgressiveRender job(*this, program, control, kDefaultTileSize);
     render::RenderOutcome outcome;
     job.draw([&] { return !(outcome.cancelled = control.cancel && control.cancel->load()); }, control.progress);
     if (!outcome.cancelled) outcome.frame = job.frame();

@@ -7,12 +7,14 @@
 
 namespace sdfwb::gl {
 
-GlProgressiveRender::GlProgressiveRender(GlRenderer& renderer, program::Program program, int tileSize)
+GlProgressiveRender::GlProgressiveRender(GlRenderer& renderer, program::Program program,
+                                         const render::RenderControl& control, int defaultTileSize)
     : renderer_(renderer),
       gl_(renderer.functions()),
       program_(std::move(program)),
       targets_(makeRenderTargets(gl_, program_.width, program_.height)),
-      tiles_(render::tileGrid(program_.width, program_.height, std::max(16, tileSize))),
+      tiles_(render::tilesToRender(program_.width, program_.height, control.region,
+                                   std::max(16, control.tileSize > 0 ? control.tileSize : defaultTileSize))),
       frame_(render::blankFrame(program_.width, program_.height)),
       timer_(glcontext::makeQuery(gl_)) {
     const float zero[4] = {0, 0, 0, 0};

@@ -1,6 +1,6 @@
 #pragma once
 // The GLSL backend's render loop: draws of one tile x one AA sub-sample each,
-// over render::tileGrid, into float targets, reading back each tile once all
+// over render::tilesToRender, into float targets, reading back each tile once all
 // its sub-samples are done. GlRenderer::render runs it to the end; the GUI
 // viewport spreads it over frames within a time budget (advance()).
 //
@@ -19,8 +19,11 @@ namespace sdfwb::gl {
 
 class GlProgressiveRender : public render::ProgressiveRender {
 public:
-    // Makes the float targets for program.width x program.height.
-    GlProgressiveRender(GlRenderer& renderer, program::Program program, int tileSize = 64);
+    // Makes the float targets for program.width x program.height and draws the
+    // tiles of control.region (all of them without one), control.tileSize
+    // pixels per side (defaultTileSize when 0, never under 16).
+    GlProgressiveRender(GlRenderer& renderer, program::Program program, const render::RenderControl& control,
+                        int defaultTileSize = 64);
 
     // Issues draws, waiting for each with a fence (and timing it with a GL
     // timer query), until `budgetSeconds` have passed or the render is

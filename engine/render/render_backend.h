@@ -68,10 +68,10 @@ public:
     // No background build is queued or running.
     virtual bool buildsIdle() const { return true; }
 
-    // The whole frame, in tiles, with progress and cancel.
+    // The frame (or control.region of it), in tiles, with progress and cancel.
     virtual RenderOutcome render(const program::Program& program, const RenderControl& control = {}) = 0;
     // A render the caller drives with advance(); of `control`, the tile size,
-    // threads and precision apply (the render has its own cancel and progress).
+    // region, threads and precision apply (the render has its own cancel and progress).
     virtual std::unique_ptr<ProgressiveRender> startProgressive(program::Program program,
                                                                 const RenderControl& control = {}) = 0;
 };

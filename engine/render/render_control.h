@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "image/image.h"
+#include "render/tiles.h"
 
 namespace sdfwb::render {
 
@@ -16,6 +17,9 @@ struct RenderControl {
     int threads = 0;   // CPU worker threads; 0: all hardware threads
     int tileSize = 0;  // pixels per side of a tile; 0: the backend's default
     Precision precision = Precision::Float;
+    // Only this rectangle of the frame (rows from the top, clipped to the
+    // frame); the rest of the frame stays blank. Unset: the whole frame.
+    std::optional<TileRect> region = {};
     const std::atomic<bool>* cancel = nullptr;  // checked before each tile (GL: each draw)
     // Called as work completes (tiles on the CPU, draws on GL), one call at a
     // time, from whichever thread did the work.

@@ -11,6 +11,7 @@
 #include "glcontext/gl_debug.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/region_check.h"
 #include "support/source_tree.h"
 
 namespace sdfwb {
@@ -27,7 +28,7 @@ TEST_F(ProgressiveRenderTest, ManySmallStepsGiveTheFrameOfOneRender) {
     gl::GlRenderer renderer(gl());
     program::Program p = smallDefault(2);
     render::RenderOutcome whole = renderer.render(p, {.tileSize = 32});
-    gl::GlProgressiveRender progressive(renderer, p, 32);
+    gl::GlProgressiveRender progressive(renderer, p, {.tileSize = 32});
     int calls = 0, tiles = 0;
     while (!progressive.done()) {
         tiles += static_cast<int>(progressive.advance(0.0).size());  // one draw per call
@@ -41,13 +42,25 @@ TEST_F(ProgressiveRenderTest, ManySmallStepsGiveTheFrameOfOneRender) {
     EXPECT_EQ(progressive.frame().coverage, whole.frame.coverage);
 }
 
+TEST_F(ProgressiveRenderTest, ARegionHoldsTheWholeFramesPixelsAndNothingElse) {
+    gl::GlRenderer renderer(gl());
+    program::Program p = smallDefault(2);
+    render::RenderOutcome whole = renderer.render(p, {.tileSize = 32});
+    const render::TileRect region{37, 21, 50, 30};
+    render::RenderOutcome part = renderer.render(p, {.tileSize = 16, .region = region});
+    test::expectRegionOfFrame(whole.frame, part.frame, region);
+    gl::GlProgressiveRender progressive(renderer, p, {.tileSize = 16, .region = render::TileRect{100, 60, 99, 99}});
+    while (!progressive.done()) progressive.advance(0.0);
+    test::expectRegionOfFrame(whole.frame, progressive.frame(), {100, 60, 20, 10});  // clipped to 120x70
+}
+
 // A GL error an earlier call left pending (the GUI's, sharing the context)
 // is not this render's: it used to fail the viewport's GLSL render after the
 // next edit, blamed on "GlProgressiveRender::draw".
 TEST_F(ProgressiveRenderTest, AnErrorLeftByAnEarlierCallDoesNotFailTheDraw) {
     gl::GlRenderer renderer(gl());
     program::Program p = smallDefault(1);
-    gl::GlProgressiveRender progressive(renderer, p, 64);
+    gl::GlProgressiveRender progressive(renderer, p, {});
     gl().Enable(0x7FFF);  // no such capability: GL_INVALID_ENUM
     EXPECT_NO_THROW(progressive.advance(0.0));
     EXPECT_EQ(glcontext::takeGlErrors(gl()), "");

@@ -11,6 +11,7 @@
 #include "cpu/cpu_backend.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "support/region_check.h"
 #include "support/source_tree.h"
 
 namespace sdfwb {
@@ -19,6 +20,18 @@ namespace {
 program::Program smallDefault() {
     scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/default.json");
     return program::compileScene(s, {50, 30, 2});
+}
+
+TEST(CpuBackend, ARegionHoldsTheWholeFramesPixelsAndNothingElse) {
+    cpu::CpuBackend backend;
+    program::Program p = smallDefault();
+    render::RenderOutcome whole = backend.render(p, {});
+    const render::TileRect region{7, 5, 23, 17};
+    test::expectRegionOfFrame(whole.frame, backend.render(p, {.tileSize = 8, .region = region}).frame, region);
+    std::unique_ptr<render::ProgressiveRender> progressive =
+        backend.startProgressive(p, {.tileSize = 8, .region = render::TileRect{-10, 20, 30, 30}});
+    while (!progressive->done()) progressive->advance(0);
+    test::expectRegionOfFrame(whole.frame, progressive->frame(), {0, 20, 20, 10});  // clipped to 50x30
 }
 
 TEST(CpuBackend, ProgressiveRenderGivesTheFrameOfOneRender) {

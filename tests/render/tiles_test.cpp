@@ -33,6 +33,15 @@ TEST(TileGrid, RowsFromTheTopLeft) {
     EXPECT_TRUE(render::tileGrid(0, 10, 16).empty());
 }
 
+TEST(TilesToRender, ARegionIsClippedToTheFrameAndTiledFromItsCorner) {
+    EXPECT_EQ(render::tilesToRender(40, 20, std::nullopt, 16), render::tileGrid(40, 20, 16));
+    std::vector<render::TileRect> expected = {{5, 3, 16, 16}, {21, 3, 4, 16}, {5, 19, 16, 1}, {21, 19, 4, 1}};
+    EXPECT_EQ(render::tilesToRender(40, 20, render::TileRect{5, 3, 20, 100}, 16), expected);
+    EXPECT_TRUE(render::tilesToRender(40, 20, render::TileRect{50, 0, 10, 10}, 16).empty());
+    EXPECT_TRUE(render::tilesToRender(40, 20, render::TileRect{-30, 0, 10, 10}, 16).empty());
+    EXPECT_TRUE(render::tilesToRender(40, 20, render::TileRect{3, 3, -5, 10}, 16).empty());
+}
+
 TEST(BlankFrame, HasEveryChannelAtZero) {
     image::Frame frame = render::blankFrame(3, 2);
     EXPECT_EQ(frame.color.rgb, std::vector<float>(18, 0.0f));
