@@ -6,7 +6,9 @@ std::string_view glslPrelude() {
     return "#define real float\n"
            "#define SHARED_FN\n"
            "#define librarySin formulaSin\n"
-           "#define libraryCos formulaCos\n";
+           "#define libraryCos formulaCos\n"
+           "#define libraryExp2 formulaExp2\n"
+           "#define libraryLog2 formulaLog2\n";
 }
 
 }  // namespace sdfwb::sdf

@@ -35,6 +35,15 @@ SHARED_FN real libraryCos(real x) {
     if constexpr (sizeof(real) == sizeof(float)) return formulaCos(x);
     return std::cos(x);
 }
+// Likewise exp2 and log2 of the exponential and power blends (operators.glsl).
+SHARED_FN real libraryExp2(real x) {
+    if constexpr (sizeof(real) == sizeof(float)) return formulaExp2(x);
+    return std::exp2(x);
+}
+SHARED_FN real libraryLog2(real x) {
+    if constexpr (sizeof(real) == sizeof(float)) return formulaLog2(x);
+    return std::log2(x);
+}
 #include "sdf/glsl/primitives.glsl"
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"

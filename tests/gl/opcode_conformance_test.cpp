@@ -45,7 +45,7 @@ struct ConformanceCase {
     std::string formula;                            // the formula opcodes' source
     std::vector<int> variants;                      // smooth booleans: every SMOOTH_* code
     // Allowed difference in units of the last place of max(|CPU value|, 1) for
-    // a variant and parameter set, kNotCompared to skip it; null: bit for bit.
+    // a variant and parameter set; null: bit for bit.
     Tolerance tolerance;
 
     ConformanceCase(Opcode o, std::vector<std::vector<dvec4>> sets, std::string source = "",
@@ -56,19 +56,6 @@ struct ConformanceCase {
           variants(std::move(codes)),
           tolerance(allowed) {}
 };
-
-constexpr std::int64_t kNotCompared = -1;
-
-// llvmpipe's exp2 and log2 are its own approximations (shared_library_gl_test
-// bounds them), and the exponential and power blends call them: within 256
-// units of the last place (60 seen, on a blended shininess). With k = 1e-12 (set 1) the power blend raises their
-// error to the power 1/k and the material weight flips between the backends;
-// known, not compared, until these variants use bit-exact twins (as formulas'
-// exp and log do, transcendental.glsl).
-std::int64_t smoothTolerance(int variant, size_t set) {
-    if (variant == sdf::f64::SMOOTH_POWER && set == 1) return kNotCompared;
-    return variant == sdf::f64::SMOOTH_EXPONENTIAL || variant == sdf::f64::SMOOTH_POWER ? 256 : 0;
-}
 
 // The displacement's product of three library sines can be a unit of the last
 // place apart (the sines alone agree bit for bit); not yet explained.
@@ -131,9 +118,9 @@ std::vector<ConformanceCase> conformanceCases() {
         {Opcode::Union, {{}}},
         {Opcode::Intersection, {{}}},
         {Opcode::Difference, {{}}},
-        {Opcode::SmoothUnion, smoothSets, "", smoothVariants, smoothTolerance},
-        {Opcode::SmoothIntersection, smoothSets, "", smoothVariants, smoothTolerance},
-        {Opcode::SmoothDifference, smoothSets, "", smoothVariants, smoothTolerance},
+        {Opcode::SmoothUnion, smoothSets, "", smoothVariants},
+        {Opcode::SmoothIntersection, smoothSets, "", smoothVariants},
+        {Opcode::SmoothDifference, smoothSets, "", smoothVariants},
         {Opcode::ScaleDistance, {{dvec4(0.5, 0, 0, 0)}, {dvec4(0)}, {dvec4(kHuge, 0, 0, 0)}}},
         {Opcode::RoundDistance, {{dvec4(0.2, 0, 0, 0)}, {dvec4(0)}, {dvec4(-1, 0, 0, 0)}}},
         {Opcode::Displace, {{dvec4(0.1, 5, 0.5, 0)}, {dvec4(0)}, {dvec4(0.3, 1e4, 1, 0)}}, "", {0}, displaceTolerance},
@@ -313,7 +300,6 @@ protected:
             const bool pointOp = program::opcodeInfo(c.op).opClass == OpClass::Point;
             for (size_t set = 0; set < c.parameterSets.size(); ++set) {
                 const std::int64_t tolerance = c.tolerance ? c.tolerance(variant, set) : 0;
-                if (tolerance == kNotCompared) continue;
                 // point instructions: three probes x, y, z of the moved point; otherwise the sample's views
                 const int runs = pointOp ? 3 : 1 + shared::MATERIAL_SLOTS;
                 for (int run = 0; run < runs; ++run) {

@@ -38,8 +38,8 @@ SHARED_FN Blend sminExponential(real a, real b, real k) {
         return hardMin(a, b);
     }
     real sharpness = real(4) / k;
-    real e = exp2(-sharpness * abs(a - b));
-    real d = min(a, b) - log2(real(1) + e) / sharpness;
+    real e = libraryExp2(-sharpness * abs(a - b));
+    real d = min(a, b) - libraryLog2(real(1) + e) / sharpness;
     real wOfLarger = e / (real(1) + e);
     if (a <= b) {
         return Blend(d, wOfLarger);
@@ -57,9 +57,9 @@ SHARED_FN Blend sminPower(real a, real b, real k) {
     }
     real s = real(1) / k;
     real m = min(a, b);
-    real ratioPow = exp2(s * log2(m / max(a, b)));
-    real d = m * exp2(-log2(real(1) + ratioPow) / s);
-    return Blend(d, exp2((s + real(1)) * log2(d / b)));
+    real ratioPow = libraryExp2(s * libraryLog2(m / max(a, b)));
+    real d = m * libraryExp2(-libraryLog2(real(1) + ratioPow) / s);
+    return Blend(d, libraryExp2((s + real(1)) * libraryLog2(d / b)));
 }
 
 // Root: (a + b - sqrt((a-b)^2 + c)) / 2 with c = k^2 / 4, written as

@@ -106,3 +106,9 @@ SHARED_FN real formulaLog(real x) {
 // GLSL's exp2(y log2 x), its relative error grows with |y log x|: 2 ulps
 // times that (1.5e-6 for 2^-126 to the power 0.5).
 SHARED_FN real formulaPow(real x, real y) { return formulaExp(y * formulaLog(x)); }
+
+// 2^x and log2(x) for the library's blends (librarySin's twins, shared_instance.inl):
+// through exp and log, so within a few ulps more than those (the product with
+// ln 2 rounds once); below the smallest normal float, as formulaLog.
+SHARED_FN real formulaExp2(real x) { return formulaExp(x * real(0.693147180559945309)); }
+SHARED_FN real formulaLog2(real x) { return formulaLog(x) * real(1.44269504088896341); }
