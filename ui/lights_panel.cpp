@@ -1,5 +1,6 @@
-// Lights: up to scene::kMaxLights directional lights, each with its direction
-// as azimuth and elevation angles (or the raw vector), colour and softness k.
+// Lights: up to scene::kMaxLights directional lights, one widget per row of
+// the light settings table (the direction also as azimuth and elevation
+// angles and as a gizmo).
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
+#include "ui/setting_widgets.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -89,15 +91,19 @@ void drawLightsPanel(Editor& editor, UiState& ui) {
             auto set = [&, i](WidgetEdit edit) {
                 commitEdit(editor, ui, edit, "Edit light", [&light, i](scene::Scene& s) { s.lights[i] = light; });
             };
-            glm::dvec2 angles = anglesOf(light.direction);
-            double angle[2] = {angles.x, angles.y};
-            bool changed = ImGui::DragScalarN("az / el (deg)", ImGuiDataType_Double, angle, 2, 0.5f, nullptr, nullptr, "%.1f");
-            if (changed) light.direction = directionOf(angle[0], std::clamp(angle[1], -89.9, 89.9));
-            set({changed, ImGui::IsItemDeactivatedAfterEdit()});
-            set(dragVec3("direction", light.direction, 0.01, -1e6, 1e6));
-            set(directionGizmo(light.direction));
-            set(colorEdit("colour", light.color));
-            set(dragReal("softness k", light.softness, 0.05, 0.01, 1000.0, "%.2f"));
+            for (const scene::Setting<scene::Light>& row : scene::lightSettings()) {
+                const bool direction = row.type == scene::SettingType::Direction;
+                if (direction) {  // the same vector as two angles, then as a vector, then as a gizmo
+                    glm::dvec2 angles = anglesOf(light.direction);
+                    double angle[2] = {angles.x, angles.y};
+                    bool changed = ImGui::DragScalarN("az / el (deg)", ImGuiDataType_Double, angle, 2, 0.5f, nullptr,
+                                                      nullptr, "%.1f");
+                    if (changed) light.direction = directionOf(angle[0], std::clamp(angle[1], -89.9, 89.9));
+                    set({changed, ImGui::IsItemDeactivatedAfterEdit()});
+                }
+                set(settingWidget(row, light));
+                if (direction) set(directionGizmo(light.direction));
+            }
             if (ImGui::SmallButton("Remove")) {
                 reportProblems(ui, editor.apply("Remove light", [i](scene::Scene& s) {
                     s.lights.erase(s.lights.begin() + static_cast<long>(i));

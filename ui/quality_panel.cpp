@@ -7,6 +7,7 @@
 
 #include "tradeoff/presets.h"
 #include "ui/panel_widgets.h"
+#include "ui/setting_widgets.h"
 
 namespace sdfwb::ui {
 namespace {
@@ -38,8 +39,11 @@ void drawQualityPresets(Editor& editor, UiState& ui, const tradeoff::SceneMeasur
     // the tracing speed-up the presets use (docs/scene-format.md, step relaxation)
     scene::RenderSettings r = editor.scene().render;
     ImGui::PushItemWidth(-130);
-    commitEdit(editor, ui, dragReal("step relaxation", r.stepRelaxation, 0.01, 1.0, 1.9), "Edit render settings",
-               [&r](scene::Scene& s) { s.render = r; });
+    for (const scene::Setting<scene::RenderSettings>& row : scene::renderSettings()) {
+        if (row.key != "step_relaxation") continue;  // the render panel leaves this row to this section
+        commitEdit(editor, ui, settingWidget(row, r), "Edit render settings", [&r](scene::Scene& s) { s.render = r; },
+                   "render.step_relaxation");
+    }
     ImGui::PopItemWidth();
 }
 
