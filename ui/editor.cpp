@@ -290,10 +290,7 @@ std::string_view Editor::undoLabel() const { return undo_.empty() ? std::string_
 std::string_view Editor::redoLabel() const { return redo_.empty() ? std::string_view() : redo_.back().label; }
 
 Problems Editor::setView(const scene::Camera& camera) {
-    // the loader's camera rules on a scene that holds nothing else
-    scene::Scene probe;
-    probe.camera = camera;
-    if (Problems problems = scene::validateScene(probe); !problems.empty()) return problems;
+    if (Problems problems = scene::cameraProblems(camera); !problems.empty()) return problems;
     if (scene_.camera != camera) {
         scene_.camera = camera;
         ++revision_;

@@ -130,6 +130,26 @@ const std::array<KindSpec, kNodeKindCount> kKinds = {{
     {Polynomial, "polynomial", Primitive, Bound, 0, 0, kPolynomial},
 }};
 
+std::string checkFormula(Range kind, const std::string& text) {
+    try {
+        switch (kind) {
+        case SdfFormula: expr::compileSdf(text); break;
+        case ImplicitFormula: expr::compileImplicit(text); break;
+        case PolynomialFormula: {
+            expr::SpaceFormula f = expr::compileImplicit(text);
+            expr::toPolynomial(f.graph, f.value, sdfwb::algebra::Ring::make({"x", "y", "z"}));
+            break;
+        }
+        default: break;
+        }
+    } catch (const std::exception& error) {
+        return error.what();
+    }
+    return "";
+}
+
+}  // namespace
+
 std::string formatNumber(double v) {
     std::ostringstream out;
     out << v;
@@ -152,26 +172,6 @@ std::string checkScalar(Range range, double v) {
     default: return "";
     }
 }
-
-std::string checkFormula(Range kind, const std::string& text) {
-    try {
-        switch (kind) {
-        case SdfFormula: expr::compileSdf(text); break;
-        case ImplicitFormula: expr::compileImplicit(text); break;
-        case PolynomialFormula: {
-            expr::SpaceFormula f = expr::compileImplicit(text);
-            expr::toPolynomial(f.graph, f.value, sdfwb::algebra::Ring::make({"x", "y", "z"}));
-            break;
-        }
-        default: break;
-        }
-    } catch (const std::exception& error) {
-        return error.what();
-    }
-    return "";
-}
-
-}  // namespace
 
 const KindSpec& kindSpec(NodeKind kind) { return kKinds[static_cast<size_t>(kind)]; }
 

@@ -102,6 +102,10 @@ int fieldIndex(const KindSpec& spec, std::string_view field);
 // phrased to follow "<path>: ", e.g. "must be > 0 (got -1)" or, for a formula,
 // "column 7: expected ')' after function arguments".
 std::string checkField(const FieldSpec& field, const FieldValue& value);
+// The rule of one number under `range` (a finite number first), worded as checkField words it.
+std::string checkScalar(Range range, double v);
+// A number as the problem messages quote it ("0.5", "1e+300").
+std::string formatNumber(double v);
 
 // Problems that involve several fields of one node (e.g. bounds_min < bounds_max),
 // as (field name, reason) pairs.

@@ -29,7 +29,7 @@ public:
     std::vector<std::string> problems;
 
     void fail(const std::string& path, const std::string& reason) {
-        problems.push_back(abbreviatedPath(path) + ": " + reason);
+        problems.push_back(problemAt(path, reason));
     }
 
     bool number(const json& value, const std::string& path, double& out) {

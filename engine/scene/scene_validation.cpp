@@ -42,43 +42,63 @@ std::string materialNameProblem(const std::string& name, std::set<std::string>& 
     return "";
 }
 
+std::string problemAt(const std::string& path, const std::string& reason) {
+    return abbreviatedPath(path) + ": " + reason;
+}
+
 namespace {
 
 std::string missingMaterial(const std::string& name) {
     return "no material named " + io::quoted(name) + " in materials";
 }
 
-// A node of the walk with its JSON path; `leaving` marks the second visit,
-// after its children, where the checks that need them run (the reader's order).
-struct Visit {
-    const Node* node;
-    std::string path;
-    int depth;
-    bool leaving;
-};
+// Walks the tree depth first on a stack of its own (trees are kMaxNodeDepth
+// deep), keeping one JSON path that grows and shrinks with the walk instead
+// of a path per node: this runs after every edit. enter(node, path, depth)
+// says whether to go below the node; leave(node, path) runs after its children.
+template <typename Enter, typename Leave>
+void walkTree(const Node& root, Enter enter, Leave leave) {
+    struct Frame {
+        const Node* node;
+        std::size_t next;        // the next child to visit
+        std::size_t pathLength;  // of the node's own path
+    };
+    std::string path = "root";
+    std::vector<Frame> stack;
+    if (enter(root, path, 1)) stack.push_back({&root, 0, path.size()});
+    while (!stack.empty()) {
+        Frame& top = stack.back();
+        path.resize(top.pathLength);
+        if (top.next < top.node->children.size()) {
+            const std::size_t i = top.next++;
+            const Node& child = top.node->children[i];
+            path += ".children[" + std::to_string(i) + "]";
+            if (enter(child, path, static_cast<int>(stack.size()) + 1)) stack.push_back({&child, 0, path.size()});
+            continue;
+        }
+        leave(*top.node, path);
+        stack.pop_back();
+    }
+}
 
 }  // namespace
 
 std::vector<std::string> materialReferenceProblems(const Scene& scene) {
     std::vector<std::string> problems;
-    std::vector<std::pair<const Node*, std::string>> stack{{&scene.root, "root"}};
-    while (!stack.empty()) {
-        auto [node, path] = std::move(stack.back());
-        stack.pop_back();
-        const KindSpec& spec = kindSpec(node->kind);
-        if (int index = fieldIndex(spec, "material"); index >= 0 && static_cast<size_t>(index) < node->fields.size()) {
-            const std::string* name = std::get_if<std::string>(&node->fields[static_cast<size_t>(index)]);
+    auto enter = [&](const Node& node, const std::string& path, int) {
+        const KindSpec& spec = kindSpec(node.kind);
+        if (int index = fieldIndex(spec, "material"); index >= 0 && static_cast<size_t>(index) < node.fields.size()) {
+            const std::string* name = std::get_if<std::string>(&node.fields[static_cast<size_t>(index)]);
             if (name && !name->empty() && !scene.findMaterial(*name)) {
-                problems.push_back(abbreviatedPath(path + ".material") + ": " + missingMaterial(*name));
+                problems.push_back(problemAt(path + ".material", missingMaterial(*name)));
             }
         }
-        for (size_t i = node->children.size(); i-- > 0;) {  // reversed: the first child is checked first
-            stack.emplace_back(&node->children[i], path + ".children[" + std::to_string(i) + "]");
-        }
-    }
+        return true;
+    };
+    walkTree(scene.root, enter, [](const Node&, const std::string&) {});
     const std::string& ground = scene.environment.ground.material;
     if (!ground.empty() && !scene.findMaterial(ground)) {
-        problems.push_back("environment.ground.material: " + missingMaterial(ground));
+        problems.push_back(problemAt("environment.ground.material", missingMaterial(ground)));
     }
     return problems;
 }
@@ -90,51 +110,51 @@ public:
     std::vector<std::string> problems;
 
     void fail(const std::string& path, const std::string& reason) {
-        if (!reason.empty()) problems.push_back(abbreviatedPath(path) + ": " + reason);
+        if (!reason.empty()) problems.push_back(problemAt(path, reason));
     }
 
     template <typename Owner>
     void settings(std::span<const Setting<Owner>> rows, const Owner& owner, const std::string& path) {
         for (const Setting<Owner>& row : rows) {
             SettingProblem problem = settingProblem(row, owner);
-            fail(path + "." + std::string(row.key) + problem.suffix, problem.reason);
+            if (!problem.reason.empty()) fail(path + "." + std::string(row.key) + problem.suffix, problem.reason);
         }
     }
 
     void tree(const Node& root, FormulaVerdicts* verdicts) {
-        std::vector<Visit> stack{{&root, "root", 1, false}};
-        while (!stack.empty()) {
-            Visit visit = std::move(stack.back());
-            stack.pop_back();
-            const Node& node = *visit.node;
+        auto enter = [&](const Node& node, const std::string& path, int depth) {
+            if (depth > kMaxNodeDepth) {
+                fail(path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth) + " levels");
+                return false;
+            }
             const KindSpec& spec = kindSpec(node.kind);
-            if (visit.leaving) {
-                for (const auto& [field, reason] : nodeStructureProblems(spec, node)) fail(visit.path + "." + field, reason);
-                continue;
-            }
-            if (visit.depth > kMaxNodeDepth) {
-                fail(visit.path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth) + " levels");
-                continue;
-            }
             for (size_t i = 0; i < spec.fields.size() && i < node.fields.size(); ++i) {
                 std::string reason = verdicts ? verdicts->check(spec.fields[i], node.fields[i])
                                               : checkField(spec.fields[i], node.fields[i]);
-                fail(visit.path + "." + std::string(spec.fields[i].name), reason);
+                if (!reason.empty()) fail(path + "." + std::string(spec.fields[i].name), reason);
             }
-            stack.push_back({visit.node, visit.path, visit.depth, true});
-            for (size_t i = node.children.size(); i-- > 0;) {
-                stack.push_back({&node.children[i], visit.path + ".children[" + std::to_string(i) + "]",
-                                 visit.depth + 1, false});
+            return true;
+        };
+        auto leave = [&](const Node& node, const std::string& path) {
+            for (const auto& [field, reason] : nodeStructureProblems(kindSpec(node.kind), node)) {
+                fail(path + "." + field, reason);
             }
-        }
+        };
+        walkTree(root, enter, leave);
     }
 };
 
 }  // namespace
 
+std::vector<std::string> cameraProblems(const Camera& camera) {
+    Collector out;
+    out.settings(cameraSettings(), camera, "camera");
+    return out.problems;
+}
+
 std::vector<std::string> validateScene(const Scene& scene, FormulaVerdicts* verdicts) {
     Collector out;
-    out.settings(cameraSettings(), scene.camera, "camera");
+    out.problems = cameraProblems(scene.camera);
     out.settings(renderSettings(), scene.render, "render");
     out.settings(environmentSettings(), scene.environment, "environment");
     out.settings(groundSettings(), scene.environment.ground, "environment.ground");

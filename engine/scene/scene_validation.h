@@ -42,6 +42,12 @@ std::string materialNameProblem(const std::string& name, std::set<std::string>& 
 // naming a material the scene does not have; walks the tree without recursion.
 std::vector<std::string> materialReferenceProblems(const Scene& scene);
 
+// "<json path>: <reason>", the path shortened for one line as every scene problem is.
+std::string problemAt(const std::string& path, const std::string& reason);
+
+// The problems of the camera alone (a view change touches nothing else).
+std::vector<std::string> cameraProblems(const Camera& camera);
+
 // Every problem the JSON reader would report for this scene, each
 // "<json path>: <reason>" (for values JSON cannot hold, such as NaN, a problem
 // of their own); empty when the scene is valid.

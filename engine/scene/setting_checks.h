@@ -5,49 +5,41 @@
 // callers, the same words.
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "scene/settings_table.h"
 
 namespace sdfwb::scene {
 
-inline std::string describeNumber(double v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-}
-
 // "" when `v` is a valid integer setting of `row` (read as a double, so 2.5 is caught).
 template <typename Owner>
 std::string integerProblem(const Setting<Owner>& row, double v) {
     if (v != std::floor(v) || v < row.minimum || v > row.maximum) {
         return "must be a whole number from " + std::to_string(static_cast<int>(row.minimum)) + " to " +
-               std::to_string(static_cast<int>(row.maximum)) + " (got " + describeNumber(v) + ")";
+               std::to_string(static_cast<int>(row.maximum)) + " (got " + formatNumber(v) + ")";
     }
     return "";
 }
 
 template <typename Owner>
 std::string realProblem(const Setting<Owner>& row, double v) {
-    if (!std::isfinite(v)) return "must be a finite number";
-    const std::string unit = row.unit.empty() ? "" : " " + std::string(row.unit);
+    // the unbounded ranges word their rules as node fields do (scene/node_kinds.h)
     switch (row.range) {
-    case RealRange::Any: return "";
-    case RealRange::Positive: return v > 0 ? "" : "must be > 0 (got " + describeNumber(v) + ")";
-    case RealRange::NonNegative: return v >= 0 ? "" : "must be >= 0 (got " + describeNumber(v) + ")";
+    case RealRange::Any: return checkScalar(Range::Any, v);
+    case RealRange::Positive: return checkScalar(Range::Positive, v);
+    case RealRange::NonNegative: return checkScalar(Range::NonNegative, v);
     case RealRange::Closed:
-        return v >= row.minimum && v <= row.maximum ? ""
-                                                    : "must be from " + describeNumber(row.minimum) + " to " +
-                                                          describeNumber(row.maximum) + unit + " (got " +
-                                                          describeNumber(v) + ")";
-    case RealRange::Open:
-        return v > row.minimum && v < row.maximum ? ""
-                                                  : "must be strictly between " + describeNumber(row.minimum) +
-                                                        " and " + describeNumber(row.maximum) + unit + " (got " +
-                                                        describeNumber(v) + ")";
+    case RealRange::Open: break;
     }
-    return "";
+    if (!std::isfinite(v)) return checkScalar(Range::Any, v);
+    const bool inside = row.range == RealRange::Closed ? v >= row.minimum && v <= row.maximum
+                                                       : v > row.minimum && v < row.maximum;
+    if (inside) return "";
+    const std::string unit = row.unit.empty() ? "" : " " + std::string(row.unit);
+    const std::string ends = formatNumber(row.minimum) +
+                             (row.range == RealRange::Closed ? " to " : " and ") + formatNumber(row.maximum);
+    return (row.range == RealRange::Closed ? "must be from " : "must be strictly between ") + ends + unit + " (got " +
+           formatNumber(v) + ")";
 }
 
 // Colours, vectors and directions whose components are already finite numbers.
@@ -74,7 +66,7 @@ SettingProblem settingProblem(const Setting<Owner>& row, const Owner& owner) {
     case SettingType::Direction: {
         const glm::dvec3& v = owner.*std::get<glm::dvec3 Owner::*>(row.member);
         for (int i = 0; i < 3; ++i) {
-            if (!std::isfinite(v[i])) return {"[" + std::to_string(i) + "]", "must be a finite number"};
+            if (!std::isfinite(v[i])) return {"[" + std::to_string(i) + "]", checkScalar(Range::Any, v[i])};
         }
         if (row.type == SettingType::Colour) return {"", colourProblem(v)};
         if (row.type == SettingType::Direction) return {"", directionProblem(v)};

@@ -122,32 +122,30 @@ TEST(ModelValidation, ListsAndReferencesAgreeWithTheReader) {
     ASSERT_FALSE(validateScene(ground).empty());
 }
 
+// The nodes of a tree, each once, in a fixed order.
+std::vector<Node*> flatten(Node& root) {
+    std::vector<Node*> nodes, stack{&root};
+    while (!stack.empty()) {
+        Node* n = stack.back();
+        stack.pop_back();
+        nodes.push_back(n);
+        for (Node& c : n->children) stack.push_back(&c);
+    }
+    return nodes;
+}
+
 // Every node of every project scene with each real field made negative and
 // then huge, each material pointing nowhere, and its children taken away.
 TEST(ModelValidation, NodeFieldsAndChildrenAgreeWithTheReader) {
     int edits = 0;
     for (const Scene& scene : projectScenes()) {
-        std::vector<Node*> nodes;
         Scene base = scene;
-        std::vector<Node*> stack{&base.root};
-        while (!stack.empty()) {
-            Node* n = stack.back();
-            stack.pop_back();
-            nodes.push_back(n);
-            for (Node& c : n->children) stack.push_back(&c);
-        }
+        const std::vector<Node*> nodes = flatten(base.root);
         for (size_t k = 0; k < nodes.size() && k < 12; ++k) {
             const size_t index = k;
             auto editNode = [&](auto change, const std::string& what) {
                 Scene edited = base;
-                std::vector<Node*> s{&edited.root}, flat;
-                while (!s.empty()) {
-                    Node* n = s.back();
-                    s.pop_back();
-                    flat.push_back(n);
-                    for (Node& c : n->children) s.push_back(&c);
-                }
-                change(*flat[index]);
+                change(*flatten(edited.root)[index]);
                 expectSameProblems(edited, scene.name + " node " + std::to_string(index) + " " + what);
                 ++edits;
             };
