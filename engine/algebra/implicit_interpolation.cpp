@@ -210,11 +210,17 @@ class Lifting {
  public:
   explicit Lifting(std::size_t size) : residues_(size) { fmpz_one(modulus_.v); }
 
+  // r + M * ((c - r) / M mod p) for each residue r (mod M) and c (mod p),
+  // with 1/M mod p computed once: fmpz_CRT_ui recomputes it for every
+  // coefficient, which made it a fifth of a small implicitization.
   void add(const PrimeImage& image) {
-    Fmpz combined;
+    nmod_t mod;
+    nmod_init(&mod, image.prime);
+    const mp_limb_t m_inverse = n_invmod(fmpz_fdiv_ui(modulus_.v, image.prime), image.prime);
     for (std::size_t i = 0; i < residues_.size(); ++i) {
-      fmpz_CRT_ui(combined.v, residues_[i].v, modulus_.v, image.vector[i], image.prime, 0);
-      fmpz_swap(residues_[i].v, combined.v);
+      const mp_limb_t r = fmpz_fdiv_ui(residues_[i].v, image.prime);
+      const mp_limb_t t = nmod_mul(nmod_sub(image.vector[i], r, mod), m_inverse, mod);
+      fmpz_addmul_ui(residues_[i].v, modulus_.v, t);
     }
     fmpz_mul_ui(modulus_.v, modulus_.v, image.prime);
     ++primes_;
@@ -331,12 +337,23 @@ std::size_t matrix_bytes(std::size_t columns) { return 2 * (columns + 8) * colum
 
 using Monomials = std::vector<std::vector<Exponent>>;
 
-// One nullspace on a thread of its own. FLINT's nmod_mat_nullspace cannot
-// be interrupted, so the caller waits for it checking the budget, and on a
-// cancel or a limit leaves it: the thread finishes that one matrix (it owns
-// its inputs) and exits, while the computation reports at once.
+// Below this many columns a nullspace takes a few milliseconds: it is
+// computed on the calling thread (a thread would cost more than the wait for
+// a cancel, and a batch of threads more primes than needed).
+constexpr std::size_t kThreadedColumns = 256;
+
+// One nullspace on a thread of its own (small ones inline, see above).
+// FLINT's nmod_mat_nullspace cannot be interrupted, so the caller waits for
+// it checking the budget, and on a cancel or a limit leaves it: the thread
+// finishes that one matrix (it owns its inputs) and exits, while the
+// computation reports at once.
 std::future<PrimeImage> start_nullspace(std::shared_ptr<const Homogeneous> h, std::shared_ptr<const Monomials> monomials,
                                         Exponent degree, mp_limb_t prime) {
+  if (monomials->size() < kThreadedColumns) {
+    std::promise<PrimeImage> ready;
+    ready.set_value(nullspace_mod(*h, *monomials, degree, prime));
+    return ready.get_future();
+  }
   std::packaged_task<PrimeImage()> task(
       [h = std::move(h), monomials = std::move(monomials), degree, prime] {
         return nullspace_mod(*h, *monomials, degree, prime);
@@ -345,11 +362,6 @@ std::future<PrimeImage> start_nullspace(std::shared_ptr<const Homogeneous> h, st
   std::thread(std::move(task)).detach();
   return result;
 }
-
-// Below this many columns a nullspace takes a few milliseconds: the search
-// computes it on the calling thread (a thread would cost more than the
-// wait for a cancel).
-constexpr std::size_t kThreadedColumns = 256;
 
 PrimeImage wait_for(std::future<PrimeImage>& image, BudgetMonitor& monitor, const Progress& progress,
                     std::size_t own_bytes) {
@@ -412,13 +424,9 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
         if (columns > kMaxInterpolationMonomials) return 0;
         monitor.check(progress, matrix_bytes(columns));
         const Exponent e = static_cast<Exponent>(d);
-        auto monomials = std::make_shared<const Monomials>(monomials_of_degree(variables, e));
-        if (columns < kThreadedColumns) {
-          first = nullspace_mod(h, *monomials, e, p0);
-        } else {
-          std::future<PrimeImage> image = start_nullspace(shared, std::move(monomials), e, p0);
-          first = wait_for(image, monitor, progress, matrix_bytes(columns));
-        }
+        std::future<PrimeImage> image =
+            start_nullspace(shared, std::make_shared<const Monomials>(monomials_of_degree(variables, e)), e, p0);
+        first = wait_for(image, monitor, progress, matrix_bytes(columns));
         if (first.nullity == 1) return e;
         if (first.nullity > 1) break;
       }
@@ -432,10 +440,12 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
     if (degree == 0) return std::nullopt;
     const auto shared_monomials = std::make_shared<const Monomials>(monomials_of_degree(variables, degree));
     const Monomials& monomials = *shared_monomials;
-    const std::size_t own_bytes = matrix_bytes(monomials.size()) * workers;
+    const unsigned batch_size = monomials.size() < kThreadedColumns ? 1 : workers;
+    const std::size_t own_bytes = matrix_bytes(monomials.size()) * batch_size;
 
-    // 2.-4. More primes, a batch of one per worker at a time, until a
-    // reconstruction agrees with a fresh prime and passes the exact check.
+    // 2.-4. More primes, a batch of one per worker at a time (one at a time
+    // when they are computed inline), until a reconstruction agrees with a
+    // fresh prime and passes the exact check.
     Lifting lifting(monomials.size());
     slong normalized_at = first.last_nonzero;
     lifting.add(first);
@@ -445,7 +455,7 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
       monitor.set_primes(lifting.primes());
       monitor.check(progress, own_bytes);
       std::vector<std::future<PrimeImage>> batch;
-      for (unsigned w = 0; w < workers; ++w) {
+      for (unsigned w = 0; w < batch_size; ++w) {
         batch.push_back(start_nullspace(shared, shared_monomials, degree, next_prime()));
       }
       for (std::future<PrimeImage>& f : batch) {
