@@ -35,8 +35,8 @@ enum class Op : std::uint8_t {
   Variable,     // input number index
   Neg, Add, Sub, Mul, Div,
   Sin, Cos, Tan, Exp, Log, Sqrt, Abs, Floor,
-  Min,          // GLSL min(a, b) = b < a ? b : a
-  Max,          // GLSL max(a, b) = a < b ? b : a
+  Min,          // GLSL min(a, b) = b < a ? b : a; a NaN operand gives the other (sdf/shared_instance.inl)
+  Max,          // GLSL max(a, b) = a < b ? b : a; likewise
   Pow,
   SelectLess,   // a < b ? c : d
   SelectEqual,  // a == b ? c : d

@@ -27,6 +27,13 @@ struct Transcendentals {
   static double pow(double a, double b) { return glm::pow(a, b); }
 };
 
+// min and max with the library's rule for a NaN operand (the other one), which
+// the generated GLSL's built-ins follow on llvmpipe.
+float minNum(float a, float b) { return sdf::f32::min(a, b); }
+double minNum(double a, double b) { return sdf::f64::min(a, b); }
+float maxNum(float a, float b) { return sdf::f32::max(a, b); }
+double maxNum(double a, double b) { return sdf::f64::max(a, b); }
+
 }  // namespace
 
 Tape::Tape(const Graph& graph, std::span<const NodeId> outputs) : variables_(graph.variables()) {
@@ -77,8 +84,8 @@ void Tape::run(std::span<const T> variables, std::span<T> slots) const {
       case Op::Sqrt: r = glm::sqrt(a); break;
       case Op::Abs: r = glm::abs(a); break;
       case Op::Floor: r = glm::floor(a); break;
-      case Op::Min: r = glm::min(a, b); break;
-      case Op::Max: r = glm::max(a, b); break;
+      case Op::Min: r = minNum(a, b); break;
+      case Op::Max: r = maxNum(a, b); break;
       case Op::Pow: r = Transcendentals::pow(a, b); break;
       case Op::SelectLess: r = a < b ? slots[in.args[2]] : slots[in.args[3]]; break;
       case Op::SelectEqual: r = a == b ? slots[in.args[2]] : slots[in.args[3]]; break;

@@ -8,7 +8,6 @@ using vec3 = glm::vec<3, real>;
 using vec4 = glm::vec<4, real>;
 
 using glm::abs;
-using glm::clamp;
 using glm::cos;
 using glm::exp2;
 using glm::floatBitsToInt;
@@ -16,10 +15,33 @@ using glm::floor;
 using glm::intBitsToFloat;
 using glm::inversesqrt;
 using glm::log2;
-using glm::max;
-using glm::min;
 using glm::sin;
 using std::sqrt;
+
+// min, max and clamp where an operand is NaN, which GLSL leaves undefined: the
+// other operand (IEEE 754 minNum/maxNum), as llvmpipe computes them and GPUs'
+// min/max instructions do; glm::min would return its first operand. For other
+// operands these are glm's (b < a ? b : a), signed zeros included.
+SHARED_FN real min(real a, real b) { return b < a || a != a ? b : a; }
+SHARED_FN real max(real a, real b) { return a < b || a != a ? b : a; }
+SHARED_FN real clamp(real x, real lo, real hi) { return min(max(x, lo), hi); }
+template <glm::length_t L>
+SHARED_FN glm::vec<L, real> min(glm::vec<L, real> a, glm::vec<L, real> b) {
+    for (glm::length_t i = 0; i < L; ++i) a[i] = min(a[i], b[i]);
+    return a;
+}
+template <glm::length_t L>
+SHARED_FN glm::vec<L, real> max(glm::vec<L, real> a, glm::vec<L, real> b) {
+    for (glm::length_t i = 0; i < L; ++i) a[i] = max(a[i], b[i]);
+    return a;
+}
+template <glm::length_t L>
+SHARED_FN glm::vec<L, real> clamp(glm::vec<L, real> x, glm::vec<L, real> lo, glm::vec<L, real> hi) {
+    return min(max(x, lo), hi);
+}
+SHARED_FN int min(int a, int b) { return b < a ? b : a; }
+SHARED_FN int max(int a, int b) { return a < b ? b : a; }
+SHARED_FN int clamp(int x, int lo, int hi) { return min(max(x, lo), hi); }
 
 #include "sdf/glsl/math.glsl"
 #include "sdf/glsl/transcendental.glsl"
@@ -44,6 +66,8 @@ SHARED_FN real libraryLog2(real x) {
     if constexpr (sizeof(real) == sizeof(float)) return formulaLog2(x);
     return std::log2(x);
 }
+// in dependency order: clang-format off keeps it
+// clang-format off
 #include "sdf/glsl/primitives.glsl"
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"
@@ -54,5 +78,6 @@ SHARED_FN real libraryLog2(real x) {
 #include "sdf/glsl/tracer.glsl"
 #include "sdf/glsl/ray_tree.glsl"
 #include "sdf/glsl/prune_grid.glsl"
+// clang-format on
 
 }  // namespace SDFWB_SHARED_NS

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -54,7 +55,8 @@ TEST(BuiltinGuards, TheDocumentedTableNamesEveryGuardedBuiltin) {
     doc << in.rdbuf();
     for (const char* row :
          {"| `sqrt(x)`, x < 0 |", "| `mod(x, 0)` |", "| `smoothstep(e, e, x)` |", "| `normalize(0)` (*differs*) |",
-          "| `pow(x, y)`, x <= 0 (*differs*) |", "| `log(x)`, x <= 0 |"}) {
+          "| `pow(x, y)`, x <= 0 (*differs*) |", "| `log(x)`, x <= 0 |",
+          "| `min(a, b)`, `max(a, b)`, `clamp(x, lo, hi)`, an operand NaN |"}) {
         EXPECT_NE(doc.str().find(row), std::string::npos) << "docs/shared-glsl-subset.md lacks the row " << row;
     }
 }
@@ -62,7 +64,16 @@ TEST(BuiltinGuards, TheDocumentedTableNamesEveryGuardedBuiltin) {
 // The library's side of each row.
 template <class Real, class Vec3, class F>
 void expectLibraryRows(F normalize3, Real (*safeSqrt)(Real), Real (*modr)(Real, Real),
-                       Real (*smoothstepr)(Real, Real, Real), Real (*safePow)(Real, Real)) {
+                       Real (*smoothstepr)(Real, Real, Real), Real (*safePow)(Real, Real), Real (*minr)(Real, Real),
+                       Real (*maxr)(Real, Real), Real (*clampr)(Real, Real, Real)) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    EXPECT_EQ(minr(nan, Real(1)), Real(1));
+    EXPECT_EQ(minr(Real(1), nan), Real(1));
+    EXPECT_EQ(maxr(nan, Real(-1)), Real(-1));
+    EXPECT_EQ(maxr(Real(-1), nan), Real(-1));
+    EXPECT_TRUE(std::isnan(minr(nan, nan)));
+    EXPECT_EQ(clampr(nan, Real(-1), Real(1)), Real(-1));
+    EXPECT_EQ(safeSqrt(nan), Real(0)) << "sqrt(max(NaN, 0))";
     EXPECT_EQ(safeSqrt(Real(-4)), Real(0));
     EXPECT_EQ(modr(Real(2.5), Real(0)), Real(2.5));
     EXPECT_EQ(modr(Real(-2.5), Real(0)), Real(-2.5));
@@ -77,12 +88,14 @@ void expectLibraryRows(F normalize3, Real (*safeSqrt)(Real), Real (*modr)(Real, 
 
 TEST(BuiltinGuards, LibraryRowsInFloat) {
     namespace s = sdf::f32;
-    expectLibraryRows<float, s::vec3>(s::normalize3, s::safeSqrt, s::modr, s::smoothstepr, s::safePow);
+    expectLibraryRows<float, s::vec3>(s::normalize3, s::safeSqrt, s::modr, s::smoothstepr, s::safePow, s::min, s::max,
+                                      s::clamp);
 }
 
 TEST(BuiltinGuards, LibraryRowsInDouble) {
     namespace s = sdf::f64;
-    expectLibraryRows<double, s::vec3>(s::normalize3, s::safeSqrt, s::modr, s::smoothstepr, s::safePow);
+    expectLibraryRows<double, s::vec3>(s::normalize3, s::safeSqrt, s::modr, s::smoothstepr, s::safePow, s::min, s::max,
+                                       s::clamp);
 }
 
 // The formulas' side: each formula is evaluated at p = (x, 0, 0).
@@ -106,6 +119,10 @@ void expectFormulaRows() {
     EXPECT_NEAR(formulaAt<Real>("log(x)", Real(0)), std::log(tiny), Real(1e-4));
     EXPECT_NEAR(formulaAt<Real>("log(x)", Real(-1)), std::log(tiny), Real(1e-4));
     EXPECT_EQ(formulaAt<Real>("mix(3.0, x, 1.0)", Real(0.1)), Real(0.1)) << "a formula's mix is exact at t = 1";
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    EXPECT_EQ(formulaAt<Real>("min(x, 2.0)", nan), Real(2));
+    EXPECT_EQ(formulaAt<Real>("max(2.0, x)", nan), Real(2));
+    EXPECT_EQ(formulaAt<Real>("clamp(x, -1.0, 1.0)", nan), Real(-1));
 }
 
 TEST(BuiltinGuards, FormulaRowsInFloat) { expectFormulaRows<float>(); }

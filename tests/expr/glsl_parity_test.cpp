@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -28,7 +29,7 @@ struct Comparison {
   double worstRelative = 0;  // max |gpu - cpu| / max(1, |cpu|)
 };
 
-Comparison compare(const glcontext::GlFunctions& gl, std::string_view source, int count) {
+Comparison compare(const glcontext::GlFunctions& gl, std::string_view source, const std::vector<float>& xyzw) {
   SpaceFormula f = compileSdf(source);
   const auto g = gradient(f.graph, f.value);
   const NodeId outputs[] = {f.value, g[0], g[1], g[2]};
@@ -39,10 +40,8 @@ Comparison compare(const glcontext::GlFunctions& gl, std::string_view source, in
                              "void main() { evalResult = sdUser(texelFetch(points, evalIndex()).xyz); }\n";
   const glcontext::FragmentEvaluator evaluator(gl, shader);
 
-  std::mt19937 rng(23);
-  std::uniform_real_distribution<float> coordinate(-3, 3);
-  glcontext::EvaluatorInput points{"points", 4, glcontext::InputLayout::Buffer, {}};
-  for (int i = 0; i < count; ++i) points.values.insert(points.values.end(), {coordinate(rng), coordinate(rng), coordinate(rng), 0});
+  const int count = static_cast<int>(xyzw.size() / 4);
+  glcontext::EvaluatorInput points{"points", 4, glcontext::InputLayout::Buffer, xyzw};
   const std::vector<float> gpu = evaluator.evaluate(gl, count, 1, std::vector{points});
 
   Comparison result;
@@ -57,6 +56,18 @@ Comparison compare(const glcontext::GlFunctions& gl, std::string_view source, in
     }
   }
   return result;
+}
+
+std::vector<float> randomPoints(int count) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> coordinate(-3, 3);
+  std::vector<float> xyzw;
+  for (int i = 0; i < count; ++i) xyzw.insert(xyzw.end(), {coordinate(rng), coordinate(rng), coordinate(rng), 0});
+  return xyzw;
+}
+
+Comparison compare(const glcontext::GlFunctions& gl, std::string_view source, int count) {
+  return compare(gl, source, randomPoints(count));
 }
 
 TEST_F(GlslParity, ExactBuiltinsAgreeBitForBit) {
@@ -110,6 +121,18 @@ TEST_F(GlslParity, EveryBuiltinAgreesBitForBit) {
   for (const auto& [name, source] : uses) {
     const Comparison c = compare(gl(), source, 2048);
     EXPECT_EQ(c.mismatches, 0) << name << ": " << source << " (worst relative difference " << c.worstRelative << ")";
+  }
+}
+
+// A NaN (0/0 in a formula, say) reaching min, max or clamp: GLSL leaves the
+// result undefined; both evaluators give the same one.
+TEST_F(GlslParity, NanOperandsOfMinMaxAgree) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> points = {nan, 1, -2, 0, 1, nan, 2, 0, nan, nan, 0.5f, 0};
+  for (const char* source : {"min(x, y)", "min(y, x)", "max(x, y)", "max(y, x)", "clamp(x, -1, 1)",
+                             "clamp(z, x, y)", "min(x, z) + max(z, y)", "step(x, z) + step(z, x)", "abs(x) + sign(y)"}) {
+    const Comparison c = compare(gl(), source, points);
+    EXPECT_EQ(c.mismatches, 0) << source;
   }
 }
 
