@@ -36,13 +36,14 @@ void drawQualityPresets(Editor& editor, UiState& ui, const tradeoff::SceneMeasur
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", static_cast<int>(preset.why.size()), preset.why.data());
     }
     ImGui::TextWrapped("%s", describeEstimate(measured, editor.scene().render).c_str());
-    // the tracing speed-up the presets use (docs/scene-format.md, step relaxation)
+    // the settings the presets trade against each other (the table's Quality rows)
     scene::RenderSettings r = editor.scene().render;
     ImGui::PushItemWidth(-130);
     for (const scene::Setting<scene::RenderSettings>& row : scene::renderSettings()) {
-        if (row.key != "step_relaxation") continue;  // the render panel leaves this row to this section
-        commitEdit(editor, ui, settingWidget(row, r), "Edit render settings", [&r](scene::Scene& s) { s.render = r; },
-                   "render.step_relaxation");
+        if (row.widget.section != scene::EditorSection::Quality) continue;
+        commitEdit(
+            editor, ui, settingWidget(row, r), "Edit render settings", [&r](scene::Scene& s) { s.render = r; },
+            "render." + std::string(row.key));
     }
     ImGui::PopItemWidth();
 }

@@ -13,12 +13,13 @@ namespace sdfwb::ui {
 void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
     scene::RenderSettings r = editor.scene().render;
     auto set = [&](WidgetEdit edit, std::string_view key) {
-        commitEdit(editor, ui, edit, "Edit render settings", [&r](scene::Scene& s) { s.render = r; },
-                   "render." + std::string(key));
+        commitEdit(
+            editor, ui, edit, "Edit render settings", [&r](scene::Scene& s) { s.render = r; },
+            "render." + std::string(key));
     };
     ImGui::PushItemWidth(-130);
     for (const scene::Setting<scene::RenderSettings>& row : scene::renderSettings()) {
-        if (row.key == "step_relaxation") continue;  // the quality section edits it (ui/quality_panel.cpp)
+        if (row.widget.section != scene::EditorSection::Panel) continue;
         // in pixel mode epsilon counts sub-sample footprints: drag by hundredths
         bool pixels = row.key == "epsilon" && r.epsilonMode == scene::EpsilonMode::Pixel;
         set(settingWidget(row, r, pixels ? 0.01 : 0.0), row.key);
@@ -29,7 +30,8 @@ void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
 void drawEnvironmentPanel(Editor& editor, UiState& ui) {
     scene::Environment e = editor.scene().environment;
     auto set = [&](WidgetEdit edit, const std::string& path) {
-        commitEdit(editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; }, path);
+        commitEdit(
+            editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; }, path);
     };
     ImGui::PushItemWidth(-130);
     for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) {

@@ -60,12 +60,17 @@ template <typename Owner>
 using SettingMember = std::variant<int Owner::*, double Owner::*, glm::dvec3 Owner::*, bool Owner::*,
                                    std::string Owner::*, ChoiceMember<Owner>>;
 
+// Where the editor draws a row: its object's panel, or the render panel's
+// quality section beside the presets that set it (ui/quality_panel.cpp).
+enum class EditorSection { Panel, Quality };
+
 // Hints for the editor's drag widget (the format's range is the row's).
 struct Widget {
     double speed = 0.01;
     double minimum = 0;  // reals: the drag's own limits inside the format's range
     double maximum = 0;
     const char* format = "%.3f";
+    EditorSection section = EditorSection::Panel;
 };
 
 template <typename Owner>
