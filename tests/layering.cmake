@@ -1,12 +1,20 @@
 # The layering the build holds to, checked on the sources' includes:
 #   engine/ includes only engine/ (no window, no UI library);
-#   ui/ includes only ui/ and engine/, and ImGui's core (no GLFW, no backend).
+#   ui/ includes only ui/ and engine/, and ImGui's core (no GLFW, no backend);
+#   ui/ lists no folder, deletes no file and reads no environment: the panels
+#   are given those services (app/user_files).
 # Run as `cmake -DSOURCE_DIR=... -P layering.cmake`; fails naming each offence.
 file(GLOB engine_dirs LIST_DIRECTORIES true RELATIVE ${SOURCE_DIR}/engine ${SOURCE_DIR}/engine/*)
 set(problems "")
 function(check_layer layer allowed_prefixes)
   file(GLOB_RECURSE sources ${SOURCE_DIR}/${layer}/*.h ${SOURCE_DIR}/${layer}/*.cpp ${SOURCE_DIR}/${layer}/*.inl)
   foreach(source ${sources})
+    if(layer STREQUAL "ui")
+      file(STRINGS ${source} services REGEX "directory_iterator|filesystem::remove|getenv")
+      foreach(line ${services})
+        list(APPEND problems "${source}: ${line} (a file-system service in ui/: it belongs in app/user_files)")
+      endforeach()
+    endif()
     file(STRINGS ${source} includes REGEX "^[ \t]*#[ \t]*include")
     foreach(line ${includes})
       if(line MATCHES "GLFW|glfw|imgui_impl_|backends/")

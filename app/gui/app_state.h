@@ -17,9 +17,10 @@
 #include "app/gui/thumbnails.h"
 #include "app/gui/view_selection.h"
 #include "app/gui/viewport.h"
+#include "app/user_files/primitive_folder.h"
+#include "app/user_files/recent_files.h"
 #include "tradeoff/measurements.h"
 #include "ui/polynomial_panel.h"
-#include "ui/primitive_library.h"
 #include "ui/editor.h"
 #include "ui/script.h"
 #include "ui/transform_handles.h"
@@ -70,7 +71,8 @@ struct AppState {
     ui::Editor editor;
     ui::UiState ui;
     ui::PolynomialPanelState polynomial;  // View > Polynomial
-    ui::PrimitiveLibrary library;         // the Library tab's files, listed once
+    PrimitiveFolder library;              // the Library tab's files, listed once
+    RecentFiles recentFiles;              // File > Open recent
     tradeoff::MeasurementLookup measurements{tradeoff::defaultCacheDirectory()};  // Render tab's error estimate
     std::unique_ptr<Viewport> viewport;
     std::unique_ptr<Thumbnails> thumbnails;

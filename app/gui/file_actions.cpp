@@ -6,7 +6,7 @@
 #include <imgui_stdlib.h>
 
 #include "scene/scene_json.h"
-#include "ui/user_paths.h"
+#include "app/user_files/user_paths.h"
 
 namespace sdfwb::app::gui {
 
@@ -16,7 +16,7 @@ std::string openScene(AppState& app, const fs::path& path) {
     try {
         app.editor.reset(scene::loadSceneFile(path));
         app.files.current = path;
-        ui::rememberRecentFile(path.string());
+        app.recentFiles.remember(path.string());
         app.ui.info("opened " + path.string());
         return "";
     } catch (const scene::SceneError& error) {
@@ -34,7 +34,7 @@ std::string saveScene(AppState& app, const fs::path& path) {
     }
     app.editor.markSaved();
     app.files.current = path;
-    ui::rememberRecentFile(path.string());
+    app.recentFiles.remember(path.string());
     removeAutosave();
     app.ui.info("saved " + path.string());
     return "";
@@ -201,7 +201,7 @@ void drawFileDialogs(AppState& app) {
     drawRestorePrompt(app);
 }
 
-fs::path autosavePath() { return ui::stateDirectory() / "autosave.json"; }
+fs::path autosavePath() { return stateDirectory() / "autosave.json"; }
 
 void autosaveTick(AppState& app, double now) {
     constexpr double kInterval = 60.0;

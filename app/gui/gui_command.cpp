@@ -25,7 +25,7 @@
 #include "image/image_io.h"
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
-#include "ui/user_paths.h"
+#include "app/user_files/recent_files.h"
 
 namespace sdfwb::app::gui {
 
@@ -212,7 +212,7 @@ int runGui(const GuiArguments& arguments) {
         // a file opened from the command line is a recent file like one opened
         // in the window (scripted runs leave the user's list alone)
         bool scripted = !arguments.script.empty() || !arguments.screenshot.empty();
-        if (!scripted && std::filesystem::is_regular_file(arguments.scene)) ui::rememberRecentFile(arguments.scene);
+        if (!scripted && std::filesystem::is_regular_file(arguments.scene)) RecentFiles().remember(arguments.scene);
         if (!arguments.script.empty()) {
             script.emplace(ui::parseScript(io::readTextFile(arguments.script), arguments.script), arguments.script);
         } else if (!arguments.screenshot.empty()) {

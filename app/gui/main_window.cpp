@@ -16,7 +16,6 @@
 #include "ui/placement.h"
 #include "ui/problems.h"
 #include "ui/quality_panel.h"
-#include "ui/user_paths.h"
 #include "ui/view_camera.h"
 
 namespace sdfwb::app::gui {
@@ -187,7 +186,10 @@ void menuBar(AppState& app) {
         if (ImGui::MenuItem("New", "Ctrl+N")) request(app, {PendingAction::Kind::New, {}});
         if (ImGui::MenuItem("Open...", "Ctrl+O")) openDialog(app, FileDialogState::Purpose::Open);
         if (ImGui::BeginMenu("Open recent")) {
-            for (const std::string& file : ui::loadRecentFiles()) {
+            if (ImGui::IsWindowAppearing()) app.recentFiles.refresh();  // files deleted since leave it
+            // a copy: opening a file puts it at the list's front
+            const std::vector<std::string> files = app.recentFiles.entries();
+            for (const std::string& file : files) {
                 if (ImGui::MenuItem(file.c_str())) request(app, {PendingAction::Kind::Open, file});
             }
             ImGui::EndMenu();

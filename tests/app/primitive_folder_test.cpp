@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "support/source_tree.h"
 #include "app/user_files/primitive_folder.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::app {
 namespace {

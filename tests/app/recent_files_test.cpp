@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "support/source_tree.h"
 #include "app/user_files/recent_files.h"
+#include "support/source_tree.h"
 
 namespace sdfwb::app {
 namespace {
