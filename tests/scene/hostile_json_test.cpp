@@ -3,14 +3,13 @@
 
 #include <gtest/gtest.h>
 
-#include <pthread.h>
 #include <unistd.h>
 
 #include <filesystem>
-#include <functional>
 
 #include "scene/json_text.h"
 #include "scene/scene_json.h"
+#include "support/small_stack.h"
 
 namespace sdfwb::scene {
 namespace {
@@ -36,23 +35,6 @@ std::string transformChain(int depth) {
         close += "]}";
     }
     return open + R"({"kind": "sphere", "radius": 0.5})" + close;
-}
-
-// Runs `body` on a thread with a stack of `bytes`: a reader that took a native
-// frame per level would overflow it on a legal tree (as the recursive node
-// reader did under AddressSanitizer, whose frames are larger).
-void onSmallStack(std::size_t bytes, const std::function<void()>& body) {
-    pthread_attr_t attributes;
-    ASSERT_EQ(pthread_attr_init(&attributes), 0);
-    ASSERT_EQ(pthread_attr_setstacksize(&attributes, bytes), 0);
-    pthread_t thread;
-    auto run = [](void* f) -> void* {
-        (*static_cast<const std::function<void()>*>(f))();
-        return nullptr;
-    };
-    ASSERT_EQ(pthread_create(&thread, &attributes, run, const_cast<std::function<void()>*>(&body)), 0);
-    pthread_join(thread, nullptr);
-    pthread_attr_destroy(&attributes);
 }
 
 TEST(HostileJson, ArraysNestedAnywhereAreRefusedWithTheirPath) {
@@ -92,7 +74,7 @@ TEST(HostileJson, TheDeepestLegalTreeLoadsOnASmallStack) {
     const std::string text = document(transformChain(kMaxNodeDepth - 1));
     Scene scene;
     std::vector<std::string> problems;
-    onSmallStack(256 * 1024, [&] {
+    test::onSmallStack(256 * 1024, [&] {
         try {
             scene = parseScene(text);  // destroyed on this thread's stack, not the small one
         } catch (const SceneError& error) {
