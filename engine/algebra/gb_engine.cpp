@@ -125,7 +125,7 @@ std::optional<typename Engine<D>::Pair> Engine<D>::next_pair(const char* stage) 
 
 template <class D>
 void Engine<D>::push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm) {
-  Pair pair{i, j, sugar, lcm_store_.size()};
+  Pair pair{i, j, sugar, lcm_store_.size(), layout_.divmask(lcm)};
   lcm_store_.insert(lcm_store_.end(), lcm, lcm + layout_.stride());
   pairs_.push_back(pair);
   heap_.push_back(static_cast<std::uint32_t>(pairs_.size() - 1));
@@ -149,16 +149,24 @@ void Engine<D>::insert(P h) {
 
   // New pairs (i, k) with the current non-redundant elements, filtered by
   // Gebauer-Moeller's criteria M, F and the product criterion B_k.
+  // The criteria compare exponents only: the lcms' order keys (a matrix
+  // product each) are encoded for the pairs kept, and divisibility masks
+  // reject most candidate divisors before the exponents are read.
   const std::size_t m = reducers_.size();
   std::vector<Word> lcms(m * stride);
+  std::vector<std::uint64_t> masks(m);
   std::vector<char> coprime(m), keep(m, 1);
   for (std::size_t a = 0; a < m; ++a) {
-    layout_.lcm(lcms.data() + a * stride, lead(reducers_[a]), lead_k);
+    layout_.lcm_exponents(lcms.data() + a * stride, lead(reducers_[a]), lead_k);
+    masks[a] = layout_.divmask(lcms.data() + a * stride);
     coprime[a] = layout_.coprime(lead(reducers_[a]), lead_k);
   }
   for (std::size_t a = 0; a < m; ++a) {  // M: an lcm properly divisible by another's
     for (std::size_t b = 0; b < m; ++b) {
-      if (b == a || !layout_.divides(lcms.data() + b * stride, lcms.data() + a * stride)) continue;
+      if (b == a || (masks[b] & ~masks[a]) != 0 ||
+          !layout_.divides(lcms.data() + b * stride, lcms.data() + a * stride)) {
+        continue;
+      }
       if (!layout_.equal(lcms.data() + b * stride, lcms.data() + a * stride)) {
         keep[a] = 0;
         ++stats_.chain_criterion;
@@ -169,7 +177,7 @@ void Engine<D>::insert(P h) {
   for (std::size_t a = 0; a < m; ++a) {  // F: one pair per lcm; none if one of them is coprime
     if (!keep[a]) continue;
     for (std::size_t b = a + 1; b < m; ++b) {
-      if (keep[b] && layout_.equal(lcms.data() + a * stride, lcms.data() + b * stride)) {
+      if (keep[b] && masks[a] == masks[b] && layout_.equal(lcms.data() + a * stride, lcms.data() + b * stride)) {
         coprime[a] = coprime[a] || coprime[b];
         keep[b] = 0;
         ++stats_.chain_criterion;
@@ -189,9 +197,10 @@ void Engine<D>::insert(P h) {
     }
     return true;
   };
+  const std::uint64_t mask_k = basis_[k].mask;
   for (std::uint32_t index : heap_) {
     Pair& pair = pairs_[index];
-    if (!pair.alive || pair.j == kGenerator) continue;
+    if (!pair.alive || pair.j == kGenerator || (mask_k & ~pair.mask) != 0) continue;
     const Word* l = pair_lcm(pair);
     if (!layout_.divides(lead_k, l)) continue;
     if (lcm_equals(lead(pair.i), lead_k, l) || lcm_equals(lead(pair.j), lead_k, l)) continue;
@@ -203,6 +212,7 @@ void Engine<D>::insert(P h) {
   for (std::size_t a = 0; a < m; ++a) {
     if (!keep[a]) continue;
     const std::uint32_t i = reducers_[a];
+    layout_.encode_keys(lcms.data() + a * stride);
     const std::uint32_t sugar_i = basis_[i].poly.sugar;
     const std::uint32_t degree_i = layout_.sugar_degree(lead(i));
     const std::uint32_t degree_l = layout_.sugar_degree(lcms.data() + a * stride);

@@ -86,6 +86,7 @@ class Engine {
     std::uint32_t i, j;  // j == kGenerator: input generator i
     std::uint32_t sugar;
     std::size_t lcm;  // offset into lcm_store_
+    std::uint64_t mask;  // divmask of the lcm
     bool alive = true;
   };
   static constexpr std::uint32_t kGenerator = 0xffffffffu;  // also Trace::Step::j

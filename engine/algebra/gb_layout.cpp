@@ -28,7 +28,7 @@ Layout::Layout(const Ring& ring) : vars_(ring.size()) {
 }
 
 void Layout::lcm(Word* out, const Word* a, const Word* b) const {
-  for (std::size_t i = keys_; i < stride_; ++i) out[i] = std::max(a[i], b[i]);
+  lcm_exponents(out, a, b);
   encode_keys(out);
 }
 

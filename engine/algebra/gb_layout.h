@@ -9,6 +9,7 @@
 
 #include "algebra/ring.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -58,6 +59,11 @@ class Layout {
     return true;
   }
   void lcm(Word* out, const Word* a, const Word* b) const;
+  /// The exponents of lcm(a, b) only (out's keys are left unset): enough for
+  /// divides, equal, coprime and divmask; encode_keys completes it.
+  void lcm_exponents(Word* out, const Word* a, const Word* b) const {
+    for (std::size_t i = keys_; i < stride_; ++i) out[i] = std::max(a[i], b[i]);
+  }
   /// Fills the keys from the exponents already stored in out[keys()..].
   void encode_keys(Word* out) const;
   std::uint32_t degree(const Word* m) const {

@@ -1,6 +1,6 @@
 #include "algebra/implicitization.h"
 
-#include "algebra/division.h"
+#include "algebra/flint_polynomial.h"
 #include "algebra/gb_elimination.h"
 #include "algebra/implicit_interpolation.h"
 #include "algebra/ideal_operations.h"
@@ -85,8 +85,8 @@ void reduce_fractions(Fractions& f) {
     Polynomial& den = f.denominators[i];
     Polynomial g = gcd(num, den);
     if (!g.is_constant()) {
-      num = *divide_exact(num, g);
-      den = *divide_exact(den, g);
+      num = *flint::divide_exact(num, g);
+      den = *flint::divide_exact(den, g);
     }
     Rational lc = den.leading_coefficient();
     num /= lc;
@@ -233,7 +233,7 @@ std::optional<Polynomial> principal_saturation(const EliminationProblem& problem
   }
   if (!g) return std::nullopt;
   if (q) {
-    for (Polynomial d = gcd(*g, *q); !d.is_constant(); d = gcd(*g, *q)) g = *divide_exact(*g, d);
+    for (Polynomial d = gcd(*g, *q); !d.is_constant(); d = gcd(*g, *q)) g = *flint::divide_exact(*g, d);
   }
   return g;
 }
@@ -438,49 +438,27 @@ ClearedParametrization clear_denominators(const RationalParametrization& p) {
   ClearedParametrization c{f.ring, f.ring->one(), {}, std::move(f.relations)};
   for (const Polynomial& den : f.denominators) c.common = lcm(c.common, den);
   for (std::size_t i = 0; i < f.numerators.size(); ++i) {
-    c.scaled.push_back(f.numerators[i] * *divide_exact(c.common, f.denominators[i]));
+    c.scaled.push_back(flint::multiply(f.numerators[i], *flint::divide_exact(c.common, f.denominators[i])));
   }
   return c;
 }
 
 Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
-  // With e = deg F, q^e * F(x) is the polynomial sum over the terms c * x^a
-  // of c * prod scaled_i^{a_i} * q^{e - |a|}.
+  // With e = deg F, q^e * F(scaled / q) is a polynomial.
   const ClearedParametrization f = clear_denominators(p);
-  const Polynomial& q = f.common;
-  const std::vector<Polynomial>& scaled = f.scaled;
   const Ring& source = *implicit.ring();
-  std::vector<std::size_t> coordinate_of(source.size());
+  std::vector<Polynomial> values;
   for (std::size_t v = 0; v < source.size(); ++v) {
     auto it = std::find(p.coordinates.begin(), p.coordinates.end(), source.variable(v));
-    if (it == p.coordinates.end()) {
-      if (implicit.contains_variable(v)) {
-        throw std::invalid_argument("substitute_parametrization: '" + source.variable(v) + "' is not a coordinate");
-      }
-      coordinate_of[v] = p.coordinates.size();
+    if (it != p.coordinates.end()) {
+      values.push_back(f.scaled[static_cast<std::size_t>(it - p.coordinates.begin())]);
+    } else if (implicit.contains_variable(v)) {
+      throw std::invalid_argument("substitute_parametrization: '" + source.variable(v) + "' is not a coordinate");
     } else {
-      coordinate_of[v] = static_cast<std::size_t>(it - p.coordinates.begin());
+      values.push_back(f.ring->zero());
     }
   }
-  // Powers computed once: powers[i][k] = scaled[i]^k, the last list for q.
-  std::vector<std::vector<Polynomial>> powers(scaled.size() + 1);
-  auto power = [&](std::size_t i, std::size_t k) -> const Polynomial& {
-    std::vector<Polynomial>& list = powers[i];
-    const Polynomial& base = i < scaled.size() ? scaled[i] : q;
-    if (list.empty()) list.push_back(f.ring->one());
-    while (list.size() <= k) list.push_back(list.back() * base);
-    return list[k];
-  };
-  const std::uint64_t degree = implicit.total_degree();
-  Polynomial sum = f.ring->zero();
-  for (const Term& t : implicit.terms()) {
-    Polynomial product = f.ring->constant(t.coefficient);
-    for (std::size_t v = 0; v < source.size(); ++v) {
-      if (t.monomial[v] != 0) product *= power(coordinate_of[v], t.monomial[v]);
-    }
-    product *= power(scaled.size(), degree - t.monomial.degree());
-    sum += product;
-  }
+  const Polynomial sum = flint::substitute_homogeneous(implicit, values, f.common);
   if (f.relations.empty()) return sum;
   GroebnerResult relations = groebner_basis(Ideal(f.ring, f.relations));
   return normal_form(sum, relations.basis);

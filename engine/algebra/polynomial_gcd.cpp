@@ -19,9 +19,7 @@ Polynomial lcm(const Polynomial& a, const Polynomial& b) {
   if (a.is_zero() || b.is_zero()) return a.ring()->zero();
   if (a.is_constant()) return b.primitive();
   if (b.is_constant()) return a.primitive();
-  std::optional<Polynomial> l = flint::divide_exact(a * b, flint::gcd(a, b));
-  if (!l) throw std::logic_error("lcm: the gcd does not divide the product");
-  return l->primitive();
+  return flint::lcm(a, b).primitive();
 }
 
 }  // namespace sdfwb::algebra
