@@ -65,6 +65,19 @@ IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& m
   const std::size_t stride = layout.stride();
   const ModularDomain domain{p};
   const std::uint32_t m_inverse = domain.inverse(mod_p(modulus, p));
+  if (acc.mons == next.mons) {
+    // The usual case, the same support modulo both: combined in place.
+    for (std::size_t t = 0; t < acc.size(); ++t) {
+      mpz_class& r = acc.coeffs[t];
+      const std::uint32_t r_mod = mod_p(r, p);
+      const std::uint32_t c = next.coeffs[t];
+      std::uint32_t factor;
+      domain.mul(factor, c >= r_mod ? c - r_mod : c + (p - r_mod), m_inverse);
+      mpz_addmul_ui(r.get_mpz_t(), modulus.get_mpz_t(), factor);
+      monitor.tick(progress);
+    }
+    return std::move(acc);
+  }
   IntPoly out;
   auto combine = [&](const Word* mon, mpz_class&& r, std::uint32_t c) {
     // r + M * ((c - r) / M mod p)
@@ -128,19 +141,21 @@ std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const G
                                                    std::pair<std::size_t, std::size_t>& probe, BudgetMonitor& monitor) {
   const std::size_t stride = layout.stride();
   const Progress progress = lifting(group.polys.size());
+  const RationalReconstruction reconstruct(group.modulus);
   mpq_class q;
   if (probe.first < group.polys.size() && probe.second < group.polys[probe.first].size() &&
-      !rational_reconstruction(group.polys[probe.first].coeffs[probe.second], group.modulus, q)) {
+      !reconstruct(group.polys[probe.first].coeffs[probe.second], q)) {
     return std::nullopt;
   }
   std::vector<Polynomial> out;
   for (std::size_t i = 0; i < group.polys.size(); ++i) {
     const IntPoly& g = group.polys[i];
     std::vector<Term> terms;
+    terms.reserve(g.size());
     for (std::size_t t = 0; t < g.size(); ++t) {
       if (mpz_sgn(g.coeffs[t].get_mpz_t()) == 0) continue;
       monitor.tick(progress);
-      if (!rational_reconstruction(g.coeffs[t], group.modulus, q)) {
+      if (!reconstruct(g.coeffs[t], q)) {
         probe = {i, t};
         return std::nullopt;
       }
@@ -227,27 +242,29 @@ std::uint32_t previous_prime(std::uint32_t below) {
   throw std::logic_error("previous_prime: no prime below " + std::to_string(below));
 }
 
-bool rational_reconstruction(const mpz_class& a, const mpz_class& modulus, mpq_class& out) {
+RationalReconstruction::RationalReconstruction(const mpz_class& modulus) {
+  fmpz_init(modulus_);
+  fmpz_init(residue_);
+  fmpq_init(value_);
+  fmpz_set_mpz(modulus_, modulus.get_mpz_t());
+}
+
+RationalReconstruction::~RationalReconstruction() {
+  fmpq_clear(value_);
+  fmpz_clear(residue_);
+  fmpz_clear(modulus_);
+}
+
+bool RationalReconstruction::operator()(const mpz_class& a, mpq_class& out) const {
   // FLINT's fmpq_reconstruct_fmpz (half-gcd for large moduli) with the
   // balanced bounds |n|, d <= sqrt(m/2): the lift spent a fifth of Katsura-6
   // in a plain Euclid over mpz_class temporaries.
-  fmpz_t residue, m;
-  fmpq_t q;
-  fmpz_init(residue);
-  fmpz_init(m);
-  fmpq_init(q);
-  fmpz_set_mpz(m, modulus.get_mpz_t());
-  fmpz_set_mpz(residue, a.get_mpz_t());
-  fmpz_mod(residue, residue, m);
-  const bool ok = fmpq_reconstruct_fmpz(q, residue, m) != 0;
-  if (ok) {
-    fmpz_get_mpz(out.get_num_mpz_t(), fmpq_numref(q));
-    fmpz_get_mpz(out.get_den_mpz_t(), fmpq_denref(q));
-  }
-  fmpq_clear(q);
-  fmpz_clear(m);
-  fmpz_clear(residue);
-  return ok;
+  fmpz_set_mpz(residue_, a.get_mpz_t());
+  fmpz_mod(residue_, residue_, modulus_);
+  if (!fmpq_reconstruct_fmpz(value_, residue_, modulus_)) return false;
+  fmpz_get_mpz(out.get_num_mpz_t(), fmpq_numref(value_));
+  fmpz_get_mpz(out.get_den_mpz_t(), fmpq_denref(value_));
+  return true;
 }
 
 namespace {

@@ -27,6 +27,9 @@
 #include "algebra/groebner_stats.h"
 #include "algebra/polynomial.h"
 
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+
 #include <functional>
 #include <optional>
 #include <vector>
@@ -68,7 +71,20 @@ bool zero_dimensional_modulo_a_prime(const std::vector<Polynomial>& input, const
 /// The first prime below `below` (deterministic Miller-Rabin; below < 2^32).
 std::uint32_t previous_prime(std::uint32_t below);
 
-/// n/d with |n|, d <= sqrt(modulus/2) and n/d = a (mod modulus), if any.
-bool rational_reconstruction(const mpz_class& a, const mpz_class& modulus, mpq_class& out);
+/// n/d with |n|, d <= sqrt(modulus/2) and n/d = a (mod modulus), if any,
+/// for many residues a modulo one modulus (converted to FLINT once).
+class RationalReconstruction {
+ public:
+  explicit RationalReconstruction(const mpz_class& modulus);
+  RationalReconstruction(const RationalReconstruction&) = delete;
+  RationalReconstruction& operator=(const RationalReconstruction&) = delete;
+  ~RationalReconstruction();
+  bool operator()(const mpz_class& a, mpq_class& out) const;
+
+ private:
+  fmpz_t modulus_;
+  mutable fmpz_t residue_;
+  mutable fmpq_t value_;
+};
 
 }  // namespace sdfwb::algebra::gb
