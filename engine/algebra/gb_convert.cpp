@@ -21,6 +21,15 @@ IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* de
   return out;
 }
 
+FmpzPoly to_fmpz_poly(const IntPoly& p) {
+  FmpzPoly out;
+  out.mons = p.mons;
+  out.coeffs.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) fmpz_set_mpz(out.coeffs[i].v, p.coeffs[i].get_mpz_t());
+  out.sugar = p.sugar;
+  return out;
+}
+
 Polynomial to_polynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,
                          const mpz_class* divisor) {
   const std::size_t stride = layout.stride();

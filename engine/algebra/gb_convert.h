@@ -11,6 +11,9 @@ namespace sdfwb::algebra::gb {
 /// same terms and order). `ring` of p must be the layout's ring.
 IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* denominator = nullptr);
 
+/// The same polynomial with FLINT integers.
+FmpzPoly to_fmpz_poly(const IntPoly& p);
+
 /// Back to a public polynomial, optionally divided by its leading
 /// coefficient; `divisor` (if given) divides every coefficient.
 Polynomial to_polynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,

@@ -67,10 +67,10 @@ std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vecto
       monitor.check(progress);
       if (!contains(f)) return false;
     }
-    const IntegerDomain integers;
-    Engine<IntegerDomain> engine(to, integers, monitor);
-    std::vector<IntPoly> packed;
-    for (const Polynomial& f : candidate) packed.push_back(to_integer_poly(f, to));
+    const FmpzDomain integers;
+    Engine<FmpzDomain> engine(to, integers, monitor);
+    std::vector<FmpzPoly> packed;
+    for (const Polynomial& f : candidate) packed.push_back(to_fmpz_poly(to_integer_poly(f, to)));
     return engine.is_groebner(std::move(packed));
   };
   return modular_groebner(generators, homogeneous, monitor, stats, &target);

@@ -51,7 +51,7 @@ typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* sc
       bucket_.scale(scale);
       for (Coeff& x : result.coeffs) domain_.mul(x, x, scale);
       if (scale_product) domain_.mul(*scale_product, *scale_product, scale);
-      if constexpr (D::has_content) scaled_bits += mpz_sizeinbase(scale.get_mpz_t(), 2);
+      if constexpr (D::has_content) scaled_bits += D::bits(scale);
     }
     domain_.negate(multiplier);
     layout_.divide(shift.data(), mon.data(), g.mons.data());
@@ -77,18 +77,15 @@ void Engine<D>::remove_content(P& result) {
   if constexpr (D::has_content) {
     // gcd of all coefficients, stopping as soon as it reaches 1 (cheap when
     // there is nothing to gain).
-    mpz_class g;
-    auto accumulate = [&g](const mpz_class& c) {
-      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
-      return mpz_cmp_ui(g.get_mpz_t(), 1) != 0;
-    };
+    Coeff g{};
+    auto accumulate = [&g](const Coeff& c) { return D::gcd_above_one(g, c); };
     for (const Coeff& c : result.coeffs) {
       if (!accumulate(c)) return;
     }
     bucket_.for_each_coefficient(accumulate);
-    if (mpz_cmp_ui(g.get_mpz_t(), 1) <= 0) return;
-    auto divide = [&g](mpz_class& c) {
-      mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+    if (D::is_zero(g) || D::is_one(g)) return;
+    auto divide = [&g](Coeff& c) {
+      D::divide_exact(c, g);
       return true;
     };
     for (Coeff& c : result.coeffs) divide(c);
@@ -437,6 +434,7 @@ typename Engine<D>::P Engine<D>::normal_form(P f, Coeff* scale) {
 }
 
 template class Engine<IntegerDomain>;
+template class Engine<FmpzDomain>;
 template class Engine<ModularDomain>;
 
 }  // namespace sdfwb::algebra::gb

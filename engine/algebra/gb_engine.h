@@ -131,6 +131,7 @@ class Engine {
 };
 
 extern template class Engine<IntegerDomain>;
+extern template class Engine<FmpzDomain>;
 extern template class Engine<ModularDomain>;
 
 }  // namespace sdfwb::algebra::gb

@@ -186,16 +186,16 @@ bool agrees_modulo(const Layout& layout, const std::vector<Polynomial>& candidat
 // Exact check over Q: the candidate is a Groebner basis and contains the input.
 bool verify(const Layout& layout, const std::vector<Polynomial>& candidate, const std::vector<Polynomial>& input,
             BudgetMonitor& monitor, GroebnerStats& stats) {
-  const IntegerDomain domain;
-  std::vector<IntPoly> packed;
-  for (const Polynomial& g : candidate) packed.push_back(to_integer_poly(g, layout));
-  Engine<IntegerDomain> membership(layout, domain, monitor);
+  const FmpzDomain domain;
+  std::vector<FmpzPoly> packed;
+  for (const Polynomial& g : candidate) packed.push_back(to_fmpz_poly(to_integer_poly(g, layout)));
+  Engine<FmpzDomain> membership(layout, domain, monitor);
   membership.set_basis(packed);
   for (const Polynomial& f : input) {
     if (f.is_zero()) continue;
-    if (!membership.normal_form(to_integer_poly(f, layout)).empty()) return false;
+    if (!membership.normal_form(to_fmpz_poly(to_integer_poly(f, layout))).empty()) return false;
   }
-  Engine<IntegerDomain> pairs(layout, domain, monitor);
+  Engine<FmpzDomain> pairs(layout, domain, monitor);
   bool ok = pairs.is_groebner(std::move(packed));
   stats.verification_pairs += pairs.stats().pairs_treated;
   return ok;

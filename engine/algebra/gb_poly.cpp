@@ -14,6 +14,17 @@ void IntegerDomain::normalize(std::vector<Coeff>& coeffs) {
   for (Coeff& c : coeffs) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
 }
 
+void FmpzDomain::normalize(std::vector<Coeff>& coeffs) {
+  if (coeffs.empty()) return;
+  Coeff g;
+  for (const Coeff& c : coeffs) {
+    if (!gcd_above_one(g, c)) break;
+  }
+  if (fmpz_sgn(coeffs.front().v) < 0) fmpz_neg(g.v, g.v);
+  if (is_one(g)) return;
+  for (Coeff& c : coeffs) divide_exact(c, g);
+}
+
 ModularDomain::Coeff ModularDomain::inverse(Coeff a) const {
   // Extended Euclid on (a, p).
   std::int64_t t = 0, new_t = 1, r = p, new_r = a;

@@ -7,6 +7,7 @@
 // (IntegerDomain: integer coefficients, fraction-free steps, primitive
 // results) and modular work (ModularDomain: Z/p, monic results).
 
+#include "algebra/flint_fmpz.h"
 #include "algebra/gb_layout.h"
 
 #include <gmpxx.h>
@@ -70,6 +71,7 @@ struct Poly {
 };
 
 using IntPoly = Poly<mpz_class>;       // exact work over Q
+using FmpzPoly = Poly<Fmpz>;           // exact checks over Q (see FmpzDomain)
 using ModPoly = Poly<std::uint32_t>;   // work modulo a prime
 
 /// Integers standing for rationals up to a nonzero factor (Q's fraction-free
@@ -105,6 +107,50 @@ struct IntegerDomain {
   }
   /// Divides by the content and makes the leading coefficient positive.
   static void normalize(std::vector<Coeff>& coeffs);
+  /// For the engine's content removal: |c| in bits; g = gcd(g, c), false
+  /// once g is 1 (nothing to divide out); c /= g exactly.
+  static std::size_t bits(const Coeff& c) { return mpz_sizeinbase(c.get_mpz_t(), 2); }
+  static bool gcd_above_one(Coeff& g, const Coeff& c) {
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+    return mpz_cmp_ui(g.get_mpz_t(), 1) != 0;
+  }
+  static void divide_exact(Coeff& c, const Coeff& g) { mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t()); }
+};
+
+/// IntegerDomain's arithmetic on FLINT integers, for the exact checks of
+/// the modular method (S-pairs and memberships over Q): their coefficients
+/// are often word-sized, which fmpz keeps without allocation, and larger
+/// ones come from FLINT's cache of GMP integers instead of malloc (GMP
+/// integers allocated and freed per term were a third of a verification).
+struct FmpzDomain {
+  using Coeff = Fmpz;
+  static constexpr bool has_content = true;
+
+  static bool is_zero(const Coeff& c) { return fmpz_is_zero(c.v); }
+  static bool is_one(const Coeff& c) { return fmpz_is_one(c.v); }
+  static void add(Coeff& a, const Coeff& b) { fmpz_add(a.v, a.v, b.v); }
+  static void mul(Coeff& out, const Coeff& a, const Coeff& b) { fmpz_mul(out.v, a.v, b.v); }
+  static void negate(Coeff& a) { fmpz_neg(a.v, a.v); }
+  static void mul_all(Coeff* out, const Coeff* in, std::size_t n, const Coeff& factor) {
+    for (std::size_t k = 0; k < n; ++k) fmpz_mul(out[k].v, in[k].v, factor.v);
+  }
+  /// As IntegerDomain::cancel_factors.
+  static void cancel_factors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
+    fmpz_gcd(multiplier.v, a.v, c.v);
+    fmpz_divexact(scale.v, a.v, multiplier.v);
+    fmpz_divexact(multiplier.v, c.v, multiplier.v);
+    if (fmpz_sgn(scale.v) < 0) {
+      fmpz_neg(scale.v, scale.v);
+      fmpz_neg(multiplier.v, multiplier.v);
+    }
+  }
+  static void normalize(std::vector<Coeff>& coeffs);
+  static std::size_t bits(const Coeff& c) { return fmpz_bits(c.v); }
+  static bool gcd_above_one(Coeff& g, const Coeff& c) {
+    fmpz_gcd(g.v, g.v, c.v);
+    return !fmpz_is_one(g.v);
+  }
+  static void divide_exact(Coeff& c, const Coeff& g) { fmpz_divexact(c.v, c.v, g.v); }
 };
 
 /// Z/p for a prime p < 2^31; results are made monic.
