@@ -288,8 +288,8 @@ void Engine<D>::load_generators(std::vector<P>& input) {
 }
 
 template <class D>
-std::vector<typename Engine<D>::P> Engine<D>::finish() {
-  interreduce();
+std::vector<typename Engine<D>::P> Engine<D>::finish(bool reduce_tails) {
+  if (reduce_tails) interreduce();
   std::vector<P> result;
   for (std::uint32_t r : reducers_) result.push_back(std::move(basis_[r].poly));
   std::sort(result.begin(), result.end(), [&](const P& a, const P& b) {
@@ -299,7 +299,7 @@ std::vector<typename Engine<D>::P> Engine<D>::finish() {
 }
 
 template <class D>
-std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input, Trace* record) {
+std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input, Trace* record, bool reduce_tails) {
   load_generators(input);
   for (std::uint32_t g = 0; g < generators_.size(); ++g) {
     push_pair(g, kGenerator, generators_[g].sugar, generators_[g].mons.data());
@@ -330,11 +330,12 @@ std::vector<typename Engine<D>::P> Engine<D>::groebner(std::vector<P> input, Tra
     }
     insert(std::move(h));
   }
-  return finish();
+  return finish(reduce_tails);
 }
 
 template <class D>
-std::optional<std::vector<typename Engine<D>::P>> Engine<D>::replay(std::vector<P> input, const Trace& trace) {
+std::optional<std::vector<typename Engine<D>::P>> Engine<D>::replay(std::vector<P> input, const Trace& trace,
+                                                                    bool reduce_tails) {
   const std::size_t stride = layout_.stride();
   load_generators(input);
   std::vector<Word> lcm(stride);
@@ -373,7 +374,7 @@ std::optional<std::vector<typename Engine<D>::P>> Engine<D>::replay(std::vector<
     kept.push_back(k);
     reducers_ = std::move(kept);
   }
-  return finish();
+  return finish(reduce_tails);
 }
 
 template <class D>

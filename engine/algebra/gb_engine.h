@@ -46,15 +46,17 @@ class Engine {
 
   /// The reduced Groebner basis of the input (zero polynomials ignored).
   /// Throws BudgetExceeded at a safe point when the budget runs out.
-  /// If `record` is given, the useful steps are recorded into it.
-  std::vector<P> groebner(std::vector<P> input, Trace* record = nullptr);
+  /// If `record` is given, the useful steps are recorded into it. With
+  /// `reduce_tails` false the basis is minimal but its tails are not
+  /// interreduced: for callers that keep part of it and reduce that.
+  std::vector<P> groebner(std::vector<P> input, Trace* record = nullptr, bool reduce_tails = true);
 
   /// The reduced basis from the steps of a trace recorded for the same
   /// input modulo another prime; nullopt as soon as a step does not give the
   /// recorded leading monomial (the trace does not fit this prime). The
   /// result is only as good as the trace: the modular algorithm verifies
-  /// what it lifts.
-  std::optional<std::vector<P>> replay(std::vector<P> input, const Trace& trace);
+  /// what it lifts. `reduce_tails` as for groebner.
+  std::optional<std::vector<P>> replay(std::vector<P> input, const Trace& trace, bool reduce_tails = true);
 
   /// True if `basis` (nonzero, normalized polynomials) is a Groebner basis:
   /// every S-pair that survives the criteria reduces to zero. Use on a fresh
@@ -101,8 +103,9 @@ class Engine {
   void load_s_polynomial(std::uint32_t i, std::uint32_t j, const Word* lcm);
   /// Normalizes the input generators and sets their sugar.
   void load_generators(std::vector<P>& input);
-  /// Interreduces and returns the non-redundant elements, sorted.
-  std::vector<P> finish();
+  /// Interreduces (unless told not to) and returns the non-redundant
+  /// elements, sorted.
+  std::vector<P> finish(bool reduce_tails = true);
   /// Divides the polynomial under reduction (result and bucket) by its content.
   void remove_content(P& result);
   void insert(P h);

@@ -356,7 +356,7 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
     std::optional<std::vector<ModPoly>> replayed;
     if (trace) {
       Engine<ModularDomain> engine(layout, domain, monitor);
-      replayed = engine.replay(reduced, *trace);
+      replayed = engine.replay(reduced, *trace, !target);
       if (replayed) ++stats.replays;
     }
     std::vector<ModPoly> basis;
@@ -365,7 +365,7 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
     } else {
       Engine<ModularDomain> engine(layout, domain, monitor);
       trace.emplace();
-      basis = engine.groebner(std::move(reduced), &*trace);
+      basis = engine.groebner(std::move(reduced), &*trace, !target);
       const std::size_t primes = stats.primes, replays = stats.replays;
       stats = engine.stats();  // the counters of the last full modular run
       stats.primes = primes;

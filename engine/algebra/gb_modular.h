@@ -36,9 +36,10 @@
 
 namespace sdfwb::algebra::gb {
 
-/// Lifting only part of each prime's basis: `extract` maps the reduced basis
-/// modulo p (in the computation ring) to the polynomials to lift (monic, in
-/// canonical order of `ring`'s layout, sorted by increasing leading
+/// Lifting only part of each prime's basis: `extract` maps a minimal
+/// Groebner basis modulo p (in the computation ring, tails not interreduced:
+/// extract reduces what it keeps) to the reduced polynomials to lift (monic,
+/// in canonical order of `ring`'s layout, sorted by increasing leading
 /// monomial), and `verify` checks a lifted candidate exactly over Q in place
 /// of the default check of a whole basis.
 struct LiftTarget {

@@ -48,7 +48,9 @@ using Monomials = std::vector<Word, UninitializedAllocator<Word>>;
 /// Terms in decreasing order of their monomials, no zero coefficients.
 template <class Coeff>
 struct Poly {
-  Monomials mons;  // size() * stride words
+  // size() * stride words; only the geobucket's pooled polynomials and its
+  // merge buffer keep a longer array (stale words, for reuse without a fill).
+  Monomials mons;
   std::vector<Coeff> coeffs;
   std::uint32_t sugar = 0;
 

@@ -1,6 +1,7 @@
 #include "algebra/rational_circles.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace sdfwb::algebra {
 
@@ -35,13 +36,20 @@ std::pair<Polynomial, std::uint64_t> substitute_circle(const Polynomial& f, std:
                                                        const Polynomial& a, const Polynomial& b, const Polynomial& w) {
   std::uint64_t d = 0;
   for (const Term& t : f.terms()) d = std::max<std::uint64_t>(d, t.monomial[c] + t.monomial[s]);
+  // Powers computed once each (recomputing them per term was most of the
+  // substitution's cost).
+  std::vector<Polynomial> powers_a{f.ring()->one()}, powers_b{f.ring()->one()}, powers_w{f.ring()->one()};
+  auto power = [](std::vector<Polynomial>& powers, const Polynomial& base, std::uint64_t k) -> const Polynomial& {
+    while (powers.size() <= k) powers.push_back(powers.back() * base);
+    return powers[k];
+  };
   Polynomial hat = f.ring()->zero();
   for (const Term& t : f.terms()) {
     Monomial rest = t.monomial;
     rest[c] = 0;
     rest[s] = 0;
-    hat += Polynomial(f.ring(), {Term{rest, t.coefficient}}) * pow(a, t.monomial[c]) * pow(b, t.monomial[s]) *
-           pow(w, d - t.monomial[c] - t.monomial[s]);
+    hat += Polynomial(f.ring(), {Term{rest, t.coefficient}}) * power(powers_a, a, t.monomial[c]) *
+           power(powers_b, b, t.monomial[s]) * power(powers_w, w, d - t.monomial[c] - t.monomial[s]);
   }
   return {hat, d};
 }
