@@ -6,7 +6,12 @@ namespace sdfwb::algebra::gb {
 
 template <class D>
 Engine<D>::Engine(const Layout& layout, const D& domain, BudgetMonitor& monitor)
-    : layout_(layout), domain_(domain), monitor_(monitor), bucket_(layout, domain) {}
+    : layout_(layout),
+      domain_(domain),
+      monitor_(monitor),
+      bucket_(layout, domain),
+      lead_term_(layout.stride()),
+      shift_(layout.stride()) {}
 
 template <class D>
 Progress Engine<D>::progress(const char* stage) const {
@@ -35,14 +40,15 @@ int Engine<D>::find_reducer(const Word* mon, std::uint64_t mask) const {
 template <class D>
 typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* scale_product) {
   const std::size_t stride = layout_.stride();
-  std::vector<Word> mon(stride), shift(stride);
+  Word* mon = lead_term_.data();
+  Word* shift = shift_.data();
   Coeff c{}, scale{}, multiplier{};
   // Bits multiplied into the polynomial since the last content removal.
   std::size_t scaled_bits = 0;
-  while (bucket_.pop_lead(mon.data(), c)) {
-    int r = find_reducer(mon.data(), layout_.divmask(mon.data()));
+  while (bucket_.pop_lead(mon, c)) {
+    int r = find_reducer(mon, layout_.divmask(mon));
     if (r < 0) {
-      result.push(mon.data(), stride, std::move(c));
+      result.push(mon, stride, std::move(c));
       continue;
     }
     const P& g = basis_[r].poly;
@@ -54,10 +60,10 @@ typename Engine<D>::P Engine<D>::reduce(P result, std::uint32_t sugar, Coeff* sc
       if constexpr (D::has_content) scaled_bits += D::bits(scale);
     }
     domain_.negate(multiplier);
-    layout_.divide(shift.data(), mon.data(), g.mons.data());
-    if (g.size() > 1) bucket_.add_multiple(g, 1, multiplier, shift.data());
+    layout_.divide(shift, mon, g.mons.data());
+    if (g.size() > 1) bucket_.add_multiple(g, 1, multiplier, shift);
     monitor_.add_work(g.size());
-    sugar = std::max(sugar, layout_.sugar_degree(shift.data()) + g.sugar);
+    sugar = std::max(sugar, layout_.sugar_degree(shift) + g.sugar);
     if constexpr (D::has_content) {
       if (scaled_bits > kContentBits && !scale_product) {
         remove_content(result);

@@ -128,6 +128,7 @@ class Engine {
   std::vector<Pair> pairs_;
   std::vector<Word> lcm_store_;
   std::vector<std::uint32_t> heap_;  // pair indices, best on top
+  std::vector<Word> lead_term_, shift_;  // reduce's scratch monomials
   std::size_t live_pairs_ = 0;
   std::size_t basis_bytes_ = 0;
   GroebnerStats stats_;

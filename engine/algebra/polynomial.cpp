@@ -1,6 +1,7 @@
 #include "algebra/polynomial.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace sdfwb::algebra {
@@ -244,14 +245,22 @@ Polynomial multiply_by_term(const Polynomial& a, const Rational& coefficient,
 }
 
 Polynomial pow(const Polynomial& base, unsigned exponent) {
-  Polynomial result = base.ring()->one();
+  if (exponent == 0) return base.ring()->one();
+  // The first factor is taken as it is, not multiplied into 1.
+  std::optional<Polynomial> result;
   Polynomial square = base;
   while (exponent > 0) {
-    if (exponent & 1u) result *= square;
+    if (exponent & 1u) {
+      if (result) {
+        *result *= square;
+      } else {
+        result = square;
+      }
+    }
     exponent >>= 1;
     if (exponent > 0) square *= square;
   }
-  return result;
+  return std::move(*result);
 }
 
 Polynomial substitute(const Polynomial& p, const std::vector<Polynomial>& values) {
