@@ -1,37 +1,110 @@
 #include "ui/placement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "cpu/pick.h"
 #include "program/bounds.h"
-#include "program/compile_scene.h"
 #include "scene/camera_frame.h"
+#include "ui/free_space.h"
 #include "ui/node_transform.h"
 #include "ui/view_camera.h"
 
 namespace sdfwb::ui {
 namespace {
 
-constexpr int kClearingSteps = 32;  // moves toward the eye before giving up on a free spot
-constexpr int kSettlingSteps = 16;  // bisections back towards the last spot that was not free
-constexpr double kGap = 0.1;        // between a duplicate and its original, of the original's size
+constexpr double kGap = 0.1;       // between a duplicate and its original, of the original's size
+constexpr double kViewCone = 0.9;  // of the view's half angle: a spot's centre stays inside the picture
 
 // How far a box of half extents `half` reaches along unit direction `n`.
 double support(const glm::dvec3& half, const glm::dvec3& n) {
     return std::abs(half.x * n.x) + std::abs(half.y * n.y) + std::abs(half.z * n.z);
 }
 
-// A box of half extents `half` centred at `centre` is clear of everything
-// in the scene (the ground included) when the field there reaches past it
-// in the direction of the nearest surface.
-bool isClear(const scene::Scene& scene, const program::Program& program, const glm::dvec3& centre,
-             const glm::dvec3& half) {
-    double d = cpu::fieldDistance(scene, program, centre);
-    return d >= 0.999 * support(half, cpu::fieldNormal(scene, program, centre));
+// The spots a search may pick from, for a box of half extents `half`.
+struct Spots {
+    const FreeSpace& space;
+    scene::CameraFrame frame;
+    glm::dvec3 half;
+    bool setsDown;  // a spot may be set down on what is under it
+
+    // in front of the eye, the box not around it
+    bool inFront(const glm::dvec3& p) const {
+        glm::dvec3 gap = glm::abs(p - frame.eye) - 1.1 * half;
+        return glm::dot(p - frame.eye, frame.forward) > 0 && std::max({gap.x, gap.y, gap.z}) > 0;
+    }
+    // the centre inside a cone within the picture (the vertical field of view, the narrower one)
+    bool inView(const glm::dvec3& p) const {
+        glm::dvec3 off = p - frame.eye;
+        double along = glm::dot(off, frame.forward);
+        return along > 0 && glm::length(off - along * frame.forward) <= kViewCone * frame.tanHalfFov * along;
+    }
+    bool free(const glm::dvec3& p) const { return inFront(p) && inView(p) && space.isClear(p, half); }
+    // Where the box goes for the spot `p`: set down on what is under it (a
+    // floor, a top face) when that is free, else on p's level when that is;
+    // two clearance tests at most.
+    std::optional<glm::dvec3> freeAt(const glm::dvec3& p) const {
+        if (setsDown) {
+            glm::dvec3 down(p.x, space.restingHeight(p, half), p.z);
+            if (down != p && free(down)) return down;
+        }
+        if (free(p)) return p;
+        return std::nullopt;
+    }
+};
+
+// The nearest free spot to `first` on rings around it on its level, within
+// the budget; nullopt when none is free.
+std::optional<glm::dvec3> searchRings(const Spots& spots, const glm::dvec3& first, double step) {
+    if (std::optional<glm::dvec3> here = spots.freeAt(first)) return here;
+    // right and left first (beside what is in the way as the user sees it),
+    // then round to behind and towards the eye
+    constexpr std::array<double, kPlacementDirections> kAngles = {0,  180, 30,  150, 330, 210,
+                                                                  60, 120, 300, 240, 90,  270};
+    glm::dvec3 across(spots.frame.right.x, 0, spots.frame.right.z),
+        ahead(spots.frame.forward.x, 0, spots.frame.forward.z);
+    across = glm::length(across) > 1e-6 ? glm::normalize(across) : glm::dvec3(1, 0, 0);
+    ahead = glm::length(ahead) > 1e-6 ? glm::normalize(ahead) : glm::cross(glm::dvec3(0, 1, 0), across);
+    for (int ring = 1; ring <= kPlacementRings; ++ring) {
+        for (double angle : kAngles) {
+            double a = glm::radians(angle);
+            glm::dvec3 direction = std::cos(a) * across + std::sin(a) * ahead;
+            auto at = [&](double radius) { return spots.freeAt(first + radius * direction); };
+            std::optional<glm::dvec3> found = at(ring * step);
+            if (!found) continue;
+            // a ring step can overshoot the free spot: back towards the first
+            // spot while free, so the box lands beside what was in the way
+            double blocked = (ring - 1) * step, clear = ring * step;
+            for (int k = 0; k < kPlacementSettlingSteps; ++k) {
+                double middle = 0.5 * (blocked + clear);
+                if (std::optional<glm::dvec3> closer = at(middle)) {
+                    clear = middle;
+                    found = closer;
+                } else {
+                    blocked = middle;
+                }
+            }
+            return found;
+        }
+    }
+    return std::nullopt;
+}
+
+// The search from `first`: the rings, else above everything there, else `first`.
+PlacementSearch searchFrom(const scene::Scene& scene, const glm::dvec3& first, const glm::dvec3& half, bool setsDown) {
+    FreeSpace space(scene);
+    Spots spots{space, scene::cameraFrame(scene.camera), half, setsDown};
+    // rings a box's size apart, or a share of the view for a small box
+    double step = std::max({0.5 * std::max(half.x, half.z), 0.04 * scene.camera.distance, 1e-3});
+    if (std::optional<glm::dvec3> found = searchRings(spots, first, step)) return {*found, true, space.tests()};
+    glm::dvec3 above(first.x, std::max(first.y, space.highestTop() + half.y), first.z);
+    bool clear = spots.inFront(above) && space.isClear(above, half);
+    return {clear ? above : first, clear, space.tests()};
 }
 
 // The world half extents of a box of local half extents `half` under `linear`.
@@ -74,69 +147,25 @@ bool takesAnotherChild(const scene::Node& node) {
     return most < 0 || static_cast<int>(node.children.size()) < most;
 }
 
-// Moves `point` along `direction` until a box of half extents `half` there is
-// clear and `allowed`; false when not within kClearingSteps steps, or (with
-// `stopWhenRefused`) once a step is not allowed.
-template <typename Allowed>
-bool clearAlong(const scene::Scene& scene, const program::Program& program, glm::dvec3& point, const glm::dvec3& half,
-                const glm::dvec3& direction, Allowed allowed, bool stopWhenRefused) {
-    glm::dvec3 moved = point, blocked = point;
-    auto free = [&](const glm::dvec3& p) { return allowed(p) && isClear(scene, program, p, half); };
-    for (int i = 0; i < kClearingSteps; ++i) {
-        bool ok = allowed(moved);
-        if (ok && isClear(scene, program, moved, half)) {
-            // a step can overshoot the free spot by up to the box's reach:
-            // back to just clear, so the box touches what it was moved off
-            for (int k = 0; k < kSettlingSteps && i > 0; ++k) {
-                glm::dvec3 middle = 0.5 * (blocked + moved);
-                (free(middle) ? moved : blocked) = middle;
-            }
-            point = moved;
-            return true;
-        }
-        if (!ok && stopWhenRefused) return false;
-        blocked = moved;
-        double reach = support(half, direction);
-        double d = cpu::fieldDistance(scene, program, moved);
-        moved += direction * std::max(reach - d, 0.05 * reach + 1e-3);
-    }
-    return false;
-}
-
 }  // namespace
 
-glm::dvec3 placementPoint(const scene::Scene& scene, const glm::dvec3& half) {
-    program::Program program = program::compileScene(scene, {2, 2, 1});  // fields only: any image size
+PlacementSearch searchPlacement(const scene::Scene& scene, const glm::dvec3& half) {
     cpu::PickResult centre = cpu::pickViewCentre(scene);
     scene::CameraFrame frame = scene::cameraFrame(scene.camera);
-    glm::dvec3 point = centre.hit ? centre.position + centre.normal * support(half, centre.normal) : scene.camera.target;
-    // inside or through something (a gap too narrow, a target inside a solid):
-    // rise until free (on top of what is there) as long as the box still
-    // covers the view centre, else come towards the eye along the centre ray,
-    // never around or behind the eye; else go beyond in front of the eye and
-    // not around it
-    auto inFront = [&](const glm::dvec3& p) {
-        glm::dvec3 gap = glm::abs(p - frame.eye) - 1.1 * half;
-        return glm::dot(p - frame.eye, frame.forward) > 0 && std::max({gap.x, gap.y, gap.z}) > 0;
-    };
-    auto seenAtCentre = [&](const glm::dvec3& p) {
-        glm::dvec3 off = p - frame.eye;
-        off -= frame.forward * glm::dot(off, frame.forward);  // from the centre ray to p
-        double distance = glm::length(off);
-        return inFront(p) && (distance < 1e-12 || distance <= support(half, off / distance) * (1.0 + 1e-9));
-    };
+    glm::dvec3 first =
+        centre.hit ? centre.position + centre.normal * support(half, centre.normal) : scene.camera.target;
     // a surface right in front of the eye leaves no room: farther along the ray
     double nearest = support(half, frame.forward);
-    if (!inFront(point)) point += frame.forward * (nearest - glm::dot(point - frame.eye, frame.forward));
-    auto anywhere = [](const glm::dvec3&) { return true; };
-    if (!clearAlong(scene, program, point, half, glm::dvec3(0, 1, 0), seenAtCentre, true) &&
-        !clearAlong(scene, program, point, half, -frame.forward, inFront, true)) {
-        // no room in front: beyond, level (the ground stays below)
-        glm::dvec3 level = glm::dvec3(frame.forward.x, 0, frame.forward.z);
-        double length = glm::length(level);
-        clearAlong(scene, program, point, half, length > 1e-6 ? level / length : glm::dvec3(0, 1, 0), anywhere, false);
+    if (glm::dot(first - frame.eye, frame.forward) < nearest) {
+        first += frame.forward * (nearest - glm::dot(first - frame.eye, frame.forward));
     }
-    return point;
+    // looking at something, spots are set down on what is under them (in
+    // front of a wall, on the floor before it); in the open they stay level
+    return searchFrom(scene, first, half, centre.hit);
+}
+
+glm::dvec3 placementPoint(const scene::Scene& scene, const glm::dvec3& half) {
+    return searchPlacement(scene, half).point;
 }
 
 Problems insertPlaced(Editor& editor, const NodePath& parent, int index, scene::Node node) {
@@ -174,20 +203,24 @@ Problems duplicatePlaced(Editor& editor, const NodePath& selected) {
     const scene::Node* node = findNode(scene.root, path);
     program::Bounds bounds = node && !path.empty() ? worldBounds(scene.root, path) : program::Bounds{};
     if (bounds.empty || bounds.infinite) return editor.duplicate(path);
-    program::Program program = program::compileScene(scene, {2, 2, 1});
+    FreeSpace space(scene);
     scene::CameraFrame frame = scene::cameraFrame(scene.camera);
     glm::dvec3 half = 0.5 * (bounds.max - bounds.min), centre = 0.5 * (bounds.min + bounds.max);
     // beside the original as the user sees it: right, left, above, behind
-    glm::dvec3 shift(0.0);
+    std::optional<glm::dvec3> shift;
     for (const glm::dvec3& direction : {frame.right, -frame.right, frame.up, frame.forward}) {
         glm::dvec3 candidate = direction * (2.0 + kGap) * support(half, direction);
-        if (shift == glm::dvec3(0.0)) shift = candidate;  // if nothing is clear, to the right
-        if (isClear(scene, program, centre + candidate, half)) {
+        if (space.isClear(centre + candidate, half)) {
             shift = candidate;
             break;
         }
     }
-    glm::dvec3 localShift = glm::inverse(worldFromInner(scene.root, parentOf(path)).linear) * shift;
+    // all four taken: the nearest free spot around the one to the right
+    if (!shift) {
+        glm::dvec3 right = centre + frame.right * (2.0 + kGap) * support(half, frame.right);
+        shift = searchFrom(scene, right, half, false).point - centre;
+    }
+    glm::dvec3 localShift = glm::inverse(worldFromInner(scene.root, parentOf(path)).linear) * *shift;
     NodePath within(selected.begin() + static_cast<long>(path.size()), selected.end());
     return insertShifted(editor, parentOf(path), path.back() + 1, *node, localShift, "Duplicate", within);
 }

@@ -8,6 +8,14 @@
 // The view centre's ray comes from the shared CPU pick (cpu/pick.h), so the
 // surface is the one both backends draw. Unbounded nodes (a plane, an sdf
 // formula) and empty booleans go where Editor::add puts them, unmoved.
+//
+// Free spots are searched, not walked to: the spot under the view centre,
+// then rings of spots around it on its level (each set down on what is under
+// it when the view centre meets a surface), nearest first, each tested by
+// FreeSpace (ui/free_space.h) against the bounds of what the scene draws. The
+// work is a fixed budget of tests whatever the scene; when no spot in it is
+// free, the node goes above everything there is, or as a last resort where
+// the view centre is.
 
 #include <optional>
 
@@ -17,8 +25,25 @@
 
 namespace sdfwb::ui {
 
-// The world point where the centre of a new object goes, given the half
-// extents of its world-aligned bounding box.
+// ---- the search's budget ----
+inline constexpr int kPlacementRings = 8;           // around the first spot
+inline constexpr int kPlacementDirections = 12;     // spots on each ring
+inline constexpr int kPlacementSettlingSteps = 10;  // bisections back towards the first spot
+// every clearance test one search may run: two per spot (set down, level)
+// for the first spot, the rings and the settling, and the fallback above
+// everything
+inline constexpr int kPlacementBudget = 2 * (1 + kPlacementRings * kPlacementDirections + kPlacementSettlingSteps) + 1;
+
+struct PlacementSearch {
+    glm::dvec3 point{0.0};  // world position of the box's centre
+    bool clear = false;     // false: no free spot within the budget, `point` is the last resort
+    int tests = 0;          // clearance tests run, at most kPlacementBudget
+};
+
+// Where the centre of a new object goes, given the half extents of its
+// world-aligned bounding box: clear of what the scene draws, in front of the
+// eye and within the view, near the surface under the view centre.
+PlacementSearch searchPlacement(const scene::Scene& scene, const glm::dvec3& halfExtents);
 glm::dvec3 placementPoint(const scene::Scene& scene, const glm::dvec3& halfExtents);
 
 // Inserts `node` as child `index` of `parent`, placed; selects the node itself
