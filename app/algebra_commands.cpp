@@ -22,8 +22,8 @@ constexpr std::size_t kMemoryLimitBytes = std::size_t(8) << 30;
 
 algebra::Budget budget(double seconds) {
     algebra::Budget b;
-    b.time_limit_seconds = timeLimit(seconds);
-    b.memory_limit_bytes = kMemoryLimitBytes;
+    b.timeLimitSeconds = timeLimit(seconds);
+    b.memoryLimitBytes = kMemoryLimitBytes;
     return b;
 }
 
@@ -49,7 +49,7 @@ std::vector<std::string> splitVariables(const std::string& text) {
 // The polynomials as a JSON array of strings in the syntax they are read in.
 nlohmann::ordered_json polynomialsJson(const std::vector<algebra::Polynomial>& polynomials) {
     nlohmann::ordered_json array = nlohmann::ordered_json::array();
-    for (const algebra::Polynomial& p : polynomials) array.push_back(p.to_string());
+    for (const algebra::Polynomial& p : polynomials) array.push_back(p.toString());
     return array;
 }
 
@@ -68,7 +68,7 @@ CLI::App* addImplicitizeCommand(CLI::App& app, ImplicitizeArguments& a) {
         ->capture_default_str();
     std::vector<std::string> orders;
     std::string orderHelp = "Monomial order of the elimination:";
-    for (const algebra::EliminationOrderName& entry : algebra::elimination_orders()) {
+    for (const algebra::EliminationOrderName& entry : algebra::eliminationOrders()) {
         orders.emplace_back(entry.name);
         orderHelp += "\n  " + std::string(entry.name) + ": " + std::string(entry.description);
     }
@@ -97,7 +97,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
         expr::TrigConversion conversion = expr::parseParametrization(a.equations, strategy);
         algebra::ImplicitizationOptions options;
         options.groebner.budget = budget(a.timeout);
-        options.order = *algebra::elimination_order_from_name(a.order);
+        options.order = *algebra::eliminationOrderFromName(a.order);
         algebra::ImplicitizationResult result = algebra::implicitize(conversion.parametrization, options);
         if (!result.ok()) {
             std::cerr << "sdf-workbench implicitize: " << result.message << "\n";
@@ -106,7 +106,7 @@ int runImplicitize(const ImplicitizeArguments& a) {
         if (a.json) {
             nlohmann::ordered_json out = {{"generators", polynomialsJson(result.generators)},
                                           {"degree", result.degree()},
-                                          {"terms", result.term_count()},
+                                          {"terms", result.termCount()},
                                           {"method", result.method},
                                           {"seconds", result.seconds}};
             std::cout << out.dump() << "\n";
@@ -115,13 +115,13 @@ int runImplicitize(const ImplicitizeArguments& a) {
         if (result.generators.empty()) {
             std::cout << "no equation: the image is dense (the elimination ideal is zero)\n";
         } else if (result.generators.size() == 1) {
-            std::cout << result.generators[0].to_string() << " = 0\n";
+            std::cout << result.generators[0].toString() << " = 0\n";
         } else {
             std::cout << "the elimination ideal has " << result.generators.size()
                       << " generators; the variety is where all vanish:\n";
-            for (const algebra::Polynomial& g : result.generators) std::cout << g.to_string() << " = 0\n";
+            for (const algebra::Polynomial& g : result.generators) std::cout << g.toString() << " = 0\n";
         }
-        std::cout << "degree " << result.degree() << ", " << result.term_count() << " terms, " << result.seconds
+        std::cout << "degree " << result.degree() << ", " << result.termCount() << " terms, " << result.seconds
                   << " s by " << result.method << "\n";
         return 0;
     });
@@ -130,11 +130,11 @@ int runImplicitize(const ImplicitizeArguments& a) {
 int runGroebner(const GroebnerArguments& a) {
     return runReportingErrors("groebner", [&] {
         std::vector<std::string> variables = splitVariables(a.vars);
-        algebra::RingPtr ring = algebra::Ring::make(variables, *algebra::MonomialOrder::from_name(a.order));
+        algebra::RingPtr ring = algebra::Ring::make(variables, *algebra::MonomialOrder::fromName(a.order));
         std::vector<algebra::Polynomial> polynomials = expr::parsePolynomials(a.polynomials, ring);
         algebra::GroebnerOptions options;
         options.budget = budget(a.timeout);
-        algebra::GroebnerResult result = algebra::groebner_basis(algebra::Ideal(ring, polynomials), options);
+        algebra::GroebnerResult result = algebra::groebnerBasis(algebra::Ideal(ring, polynomials), options);
         if (!result.ok()) {
             std::cerr << "sdf-workbench groebner: " << result.message << "\n";
             return kExitGaveUp;
@@ -144,7 +144,7 @@ int runGroebner(const GroebnerArguments& a) {
             std::cout << out.dump() << "\n";
             return 0;
         }
-        for (const algebra::Polynomial& g : result.basis) std::cout << g.to_string() << "\n";
+        for (const algebra::Polynomial& g : result.basis) std::cout << g.toString() << "\n";
         std::cout << result.basis.size() << " polynomials, " << result.seconds << " s\n";
         return 0;
     });

@@ -12,7 +12,7 @@ struct ImplicitizeArguments {
     std::string equations;  // "x = u*v; y = v; z = u^2"
     bool json = false;
     std::string trig = "cos-sin";  // or "half-angle" (measured slower: docs/expression-language.md)
-    std::string order = "elimination";  // a name of algebra::elimination_orders()
+    std::string order = "elimination";  // a name of algebra::eliminationOrders()
     double timeout = 300;             // seconds, 0 = none (timeout_argument.h)
 };
 

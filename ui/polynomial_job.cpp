@@ -46,12 +46,12 @@ PolynomialOutcome computePolynomial(const PolynomialRequest& request, const alge
         algebra::ImplicitizationResult result = algebra::implicitize(conversion.parametrization, options);
         out.seconds = result.seconds;
         if (!result.ok()) {
-            out.message = result.message.empty() ? algebra::to_string(result.status) : result.message;
+            out.message = result.message.empty() ? algebra::toString(result.status) : result.message;
             return out;
         }
         out.degree = result.degree();
-        out.terms = result.term_count();
-        for (const algebra::Polynomial& g : result.generators) out.generators.push_back(g.to_string());
+        out.terms = result.termCount();
+        for (const algebra::Polynomial& g : result.generators) out.generators.push_back(g.toString());
         if (!request.parameterRanges.empty()) out.bounds = sampledBounds(request.equations, request.parameterRanges);
         out.ok = true;
         out.message = summary(out);
@@ -157,18 +157,18 @@ void PolynomialJob::start(PolynomialRequest request) {
     shared_ = std::make_shared<Shared>();  // a superseded job keeps writing into its own
     shared_->started = std::chrono::steady_clock::now();
     algebra::Budget budget;
-    budget.time_limit_seconds = request.timeLimitSeconds;
-    budget.memory_limit_bytes = kMemoryLimitBytes;
+    budget.timeLimitSeconds = request.timeLimitSeconds;
+    budget.memoryLimitBytes = kMemoryLimitBytes;
     budget.cancel = cancel_;
-    budget.progress_interval_seconds = 0.1;
+    budget.progressIntervalSeconds = 0.1;
     std::shared_ptr<Shared> shared = shared_;
-    budget.on_progress = [shared](const algebra::Progress& p) {
+    budget.onProgress = [shared](const algebra::Progress& p) {
         std::lock_guard lock(shared->mutex);
         // the modular stages (interpolation, lifting, verification) count
         // primes, which the panel shows with the stage
         std::string stage = p.stage;
         if (p.primes > 0) stage += " (" + std::to_string(p.primes) + (p.primes == 1 ? " prime)" : " primes)");
-        shared->progress = {p.elapsed_seconds, p.basis_size, p.pairs_left, std::move(stage)};
+        shared->progress = {p.elapsedSeconds, p.basisSize, p.pairsLeft, std::move(stage)};
     };
     job_ = queue_.submit([shared, request = std::move(request), budget = std::move(budget)](jobs::Job&) {
         PolynomialOutcome outcome = computePolynomial(request, budget);

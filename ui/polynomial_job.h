@@ -35,7 +35,7 @@ struct ParameterRange {
 struct PolynomialRequest {
     std::string equations = "x = u*v; y = v; z = u^2";
     expr::TrigStrategy trig = expr::TrigStrategy::CosSinRelation;
-    algebra::EliminationOrder order = algebra::EliminationOrder::block_degrevlex;
+    algebra::EliminationOrder order = algebra::EliminationOrder::BlockDegrevlex;
     // When given, the node's bounds are the sampled image of this box (every
     // parameter must be listed); when empty, the node's defaults.
     std::vector<ParameterRange> parameterRanges;
@@ -47,7 +47,7 @@ struct PolynomialOutcome {
     // ok: a summary ("degree 3, 4 terms, 0.002 s"); else the parse error or
     // "gave up after ..." / "cancelled after ..." message, one line.
     std::string message;
-    // The generators as the formula language reads them (Polynomial::to_string).
+    // The generators as the formula language reads them (Polynomial::toString).
     std::vector<std::string> generators;
     std::uint64_t degree = 0;  // the largest total degree
     std::size_t terms = 0;     // summed over the generators

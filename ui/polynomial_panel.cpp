@@ -15,7 +15,7 @@ namespace sdfwb::ui {
 namespace {
 
 void orderCombo(algebra::EliminationOrder& order) {
-    std::span<const algebra::EliminationOrderName> orders = algebra::elimination_orders();
+    std::span<const algebra::EliminationOrderName> orders = algebra::eliminationOrders();
     auto current = std::find_if(orders.begin(), orders.end(), [&](const auto& entry) { return entry.order == order; });
     ImGui::SetNextItemWidth(200);
     if (ImGui::BeginCombo("monomial order", std::string(current->name).c_str())) {

@@ -437,7 +437,7 @@ ScriptStatus ScriptRunner::runPolynomial(const ScriptCommand& c, Editor& editor,
         return done();
     }
     if (action == "order" && arguments(1)) {
-        std::optional<algebra::EliminationOrder> order = algebra::elimination_order_from_name(a[1]);
+        std::optional<algebra::EliminationOrder> order = algebra::eliminationOrderFromName(a[1]);
         if (!order) return fail(c, "unknown order \"" + a[1] + "\" (see implicitize --help)");
         panel.request.order = *order;
         return done();

@@ -6,7 +6,7 @@
 // hanging or exhausting memory.
 //
 // Memory is counted, not capped: GMP's allocator must not throw (GMP manual),
-// so budget_gmp_bytes() counts the bytes live in GMP integers through
+// so budgetGmpBytes() counts the bytes live in GMP integers through
 // mp_set_memory_functions, and the engine adds an estimate of its own
 // monomial storage. The count is process-wide: GMP numbers owned by other
 // threads count against every budget running at the same time.
@@ -34,28 +34,28 @@ class CancelToken {
 
 /// A snapshot reported to the progress callback.
 struct Progress {
-  double elapsed_seconds = 0;
-  std::size_t basis_size = 0;   // current (not yet reduced) basis elements
-  std::size_t pairs_left = 0;   // critical pairs still to treat
-  std::size_t memory_bytes = 0; // counted memory (see the file comment)
+  double elapsedSeconds = 0;
+  std::size_t basisSize = 0;   // current (not yet reduced) basis elements
+  std::size_t pairsLeft = 0;   // critical pairs still to treat
+  std::size_t memoryBytes = 0; // counted memory (see the file comment)
   const char* stage = "";       // "buchberger", "replay", "verification", "fglm", ... (static text)
   std::size_t primes = 0;       // modular method: primes finished so far (the counts above are per prime)
 };
 
 struct Budget {
-  std::optional<double> time_limit_seconds;
-  std::optional<std::size_t> memory_limit_bytes;
+  std::optional<double> timeLimitSeconds;
+  std::optional<std::size_t> memoryLimitBytes;
   std::shared_ptr<const CancelToken> cancel;
-  /// Called from the computing thread, at most every progress_interval_seconds.
-  std::function<void(const Progress&)> on_progress;
-  double progress_interval_seconds = 0.25;
+  /// Called from the computing thread, at most every progressIntervalSeconds.
+  std::function<void(const Progress&)> onProgress;
+  double progressIntervalSeconds = 0.25;
 };
 
 /// How a budgeted computation ended.
-enum class Status { completed, cancelled, time_limit, memory_limit };
+enum class Status { Completed, Cancelled, TimeLimit, MemoryLimit };
 
 /// "completed", "cancelled", "time limit", "memory limit".
-const char* to_string(Status status);
+const char* toString(Status status);
 
 /// Thrown inside the engine at a safe point when the budget is exhausted;
 /// public entry points catch it and report a Status instead.
@@ -64,16 +64,16 @@ struct BudgetExceeded {
   std::string message;  // "gave up after 2.0 s: time limit of 2 s reached (basis 31, 118 pairs left)"
 };
 
-/// Thrown by BudgetMonitor::add_work when a work limit set by the caller is
+/// Thrown by BudgetMonitor::addWork when a work limit set by the caller is
 /// reached: not a budget of the user's, but a computation the caller tries
 /// first and abandons when it costs more than an alternative (implicitize).
 struct WorkLimitReached {};
 
 /// Bytes currently held by GMP numbers in this process (counted once the
-/// accounting allocator is installed; install_gmp_memory_accounting() is
+/// accounting allocator is installed; installGmpMemoryAccounting() is
 /// called by every BudgetMonitor and is idempotent).
-std::int64_t budget_gmp_bytes();
-void install_gmp_memory_accounting();
+std::int64_t budgetGmpBytes();
+void installGmpMemoryAccounting();
 
 /// Tracks one computation against a Budget. Cheap to poll: tick() only looks
 /// at the clock every few calls.
@@ -82,53 +82,53 @@ class BudgetMonitor {
   explicit BudgetMonitor(const Budget& budget);
 
   /// Throws BudgetExceeded when cancelled or over a limit; reports progress
-  /// when due. `own_bytes` is the caller's estimate of its non-GMP memory.
-  void check(const Progress& state, std::size_t own_bytes = 0);
+  /// when due. `ownBytes` is the caller's estimate of its non-GMP memory.
+  void check(const Progress& state, std::size_t ownBytes = 0);
   /// Like check, but reads the clock only every 64th call; for inner loops.
-  void tick(const Progress& state, std::size_t own_bytes = 0) {
-    if ((++ticks_ & 63u) == 0) check(state, own_bytes);
+  void tick(const Progress& state, std::size_t ownBytes = 0) {
+    if ((++ticks_ & 63u) == 0) check(state, ownBytes);
   }
-  double elapsed_seconds() const;
+  double elapsedSeconds() const;
   /// Primes finished by the modular method, reported with the progress.
-  void set_primes(std::size_t primes) { primes_ = primes; }
+  void setPrimes(std::size_t primes) { primes_ = primes; }
 
   /// Work counted in the engine's term operations (a term added to a
   /// reduction), a measure of cost independent of the clock and the load.
   /// Throws WorkLimitReached once the limit (if any) is passed.
-  void add_work(std::uint64_t terms) {
+  void addWork(std::uint64_t terms) {
     work_ += terms;
-    if (work_limit_ && work_ > *work_limit_) throw WorkLimitReached{};
+    if (workLimit_ && work_ > *workLimit_) throw WorkLimitReached{};
   }
   std::uint64_t work() const { return work_; }
   /// Counts from 0 against `limit` from now on; nullopt: no limit.
-  void limit_work(std::optional<std::uint64_t> limit) {
+  void limitWork(std::optional<std::uint64_t> limit) {
     work_ = 0;
-    work_limit_ = limit;
+    workLimit_ = limit;
   }
 
  private:
   const Budget& budget_;
   std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point next_report_;
-  std::int64_t gmp_bytes_at_start_;
+  std::chrono::steady_clock::time_point nextReport_;
+  std::int64_t gmpBytesAtStart_;
   std::uint32_t ticks_ = 0;
   std::size_t primes_ = 0;
   std::uint64_t work_ = 0;
-  std::optional<std::uint64_t> work_limit_;
+  std::optional<std::uint64_t> workLimit_;
 };
 
 /// Runs `body`, which may throw BudgetExceeded, and records how it ended in
 /// `result` (status and message) with the monitor's time (seconds): how the
 /// public entry points turn the engine's exception into a Status.
 template <class Result, class Body>
-void run_within_budget(Result& result, const BudgetMonitor& monitor, Body&& body) {
+void runWithinBudget(Result& result, const BudgetMonitor& monitor, Body&& body) {
   try {
     body();
   } catch (const BudgetExceeded& e) {
     result.status = e.status;
     result.message = e.message;
   }
-  result.seconds = monitor.elapsed_seconds();
+  result.seconds = monitor.elapsedSeconds();
 }
 
 }  // namespace sdfwb::algebra

@@ -6,53 +6,53 @@ namespace sdfwb::algebra {
 
 namespace {
 
-DivisionResult divide_impl(const Polynomial& f, const std::vector<Polynomial>& divisors,
-                           bool want_quotients) {
+DivisionResult divideImpl(const Polynomial& f, const std::vector<Polynomial>& divisors,
+                           bool wantQuotients) {
   const RingPtr& ring = f.ring();
   for (const Polynomial& g : divisors) {
     if (!(*g.ring() == *ring)) throw std::invalid_argument("divide: divisors from a different ring");
   }
   DivisionResult result{{}, ring->zero()};
-  if (want_quotients) result.quotients.assign(divisors.size(), ring->zero());
-  std::vector<Term> remainder_terms;
+  if (wantQuotients) result.quotients.assign(divisors.size(), ring->zero());
+  std::vector<Term> remainderTerms;
   Polynomial p = f;
-  while (!p.is_zero()) {
-    const Term lead = p.leading_term();
+  while (!p.isZero()) {
+    const Term lead = p.leadingTerm();
     bool divided = false;
     for (std::size_t i = 0; i < divisors.size() && !divided; ++i) {
       const Polynomial& g = divisors[i];
-      if (g.is_zero() || !g.leading_monomial().divides(lead.monomial)) continue;
-      Rational c = lead.coefficient / g.leading_coefficient();
-      Monomial m = lead.monomial / g.leading_monomial();
-      p -= multiply_by_term(g, c, m);
-      if (want_quotients) result.quotients[i] += Polynomial(ring, {Term{m, c}});
+      if (g.isZero() || !g.leadingMonomial().divides(lead.monomial)) continue;
+      Rational c = lead.coefficient / g.leadingCoefficient();
+      Monomial m = lead.monomial / g.leadingMonomial();
+      p -= multiplyByTerm(g, c, m);
+      if (wantQuotients) result.quotients[i] += Polynomial(ring, {Term{m, c}});
       divided = true;
     }
     if (!divided) {
       // The leading term moves to the remainder; terms are produced in
       // decreasing order, so the list stays canonical.
-      remainder_terms.push_back(lead);
+      remainderTerms.push_back(lead);
       p -= Polynomial(ring, {lead});
     }
   }
-  result.remainder = Polynomial(ring, std::move(remainder_terms));
+  result.remainder = Polynomial(ring, std::move(remainderTerms));
   return result;
 }
 
 }  // namespace
 
 DivisionResult divide(const Polynomial& f, const std::vector<Polynomial>& divisors) {
-  return divide_impl(f, divisors, true);
+  return divideImpl(f, divisors, true);
 }
 
 Polynomial reduce(const Polynomial& f, const std::vector<Polynomial>& divisors) {
-  return divide_impl(f, divisors, false).remainder;
+  return divideImpl(f, divisors, false).remainder;
 }
 
-std::optional<Polynomial> divide_exact(const Polynomial& f, const Polynomial& g) {
-  if (g.is_zero()) throw std::domain_error("divide_exact: division by zero");
+std::optional<Polynomial> divideExact(const Polynomial& f, const Polynomial& g) {
+  if (g.isZero()) throw std::domain_error("divide_exact: division by zero");
   DivisionResult r = divide(f, {g});
-  if (!r.remainder.is_zero()) return std::nullopt;
+  if (!r.remainder.isZero()) return std::nullopt;
   return std::move(r.quotients.front());
 }
 

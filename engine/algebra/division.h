@@ -25,6 +25,6 @@ DivisionResult divide(const Polynomial& f, const std::vector<Polynomial>& diviso
 Polynomial reduce(const Polynomial& f, const std::vector<Polynomial>& divisors);
 
 /// f / g when g divides f exactly, std::nullopt otherwise. g must be nonzero.
-std::optional<Polynomial> divide_exact(const Polynomial& f, const Polynomial& g);
+std::optional<Polynomial> divideExact(const Polynomial& f, const Polynomial& g);
 
 }  // namespace sdfwb::algebra

@@ -13,9 +13,9 @@ namespace {
 // One FLINT context and the polynomials made in it, freed together.
 class Context {
  public:
-  explicit Context(const RingPtr& ring, std::size_t extra_variables = 0) : ring_(ring) {
+  explicit Context(const RingPtr& ring, std::size_t extraVariables = 0) : ring_(ring) {
     // The order only decides FLINT's term layout; results are re-sorted.
-    fmpq_mpoly_ctx_init(ctx_, static_cast<slong>(std::max<std::size_t>(ring->size() + extra_variables, 1)), ORD_LEX);
+    fmpq_mpoly_ctx_init(ctx_, static_cast<slong>(std::max<std::size_t>(ring->size() + extraVariables, 1)), ORD_LEX);
   }
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -107,14 +107,14 @@ Polynomial multiply(const Polynomial& a, const Polynomial& b) {
   return context.to(product);
 }
 
-Polynomial substitute_homogeneous(const Polynomial& f, const std::vector<Polynomial>& values, const Polynomial& q) {
+Polynomial substituteHomogeneous(const Polynomial& f, const std::vector<Polynomial>& values, const Polynomial& q) {
   const std::size_t n = f.ring()->size();
   if (values.size() != n) throw std::invalid_argument("substitute_homogeneous: one value per variable");
   // f homogenized by one more variable w (f^h(x, w) = w^e f(x / w)), then
   // composed with (values, q): FLINT caches the powers of each value.
   Context source(f.ring(), 1);
   fmpq_mpoly_struct* homogeneous = source.make();
-  const std::uint64_t degree = f.total_degree();
+  const std::uint64_t degree = f.totalDegree();
   std::vector<ulong> exponents(n + 1, 0);
   fmpq_t c;
   fmpq_init(c);
@@ -138,7 +138,7 @@ Polynomial substitute_homogeneous(const Polynomial& f, const std::vector<Polynom
   return target.to(result);
 }
 
-std::optional<Polynomial> divide_exact(const Polynomial& a, const Polynomial& b) {
+std::optional<Polynomial> divideExact(const Polynomial& a, const Polynomial& b) {
   Context context(a.ring());
   fmpq_mpoly_struct* q = context.make();
   if (!fmpq_mpoly_divides(q, context.from(a), context.from(b), context.ctx())) return std::nullopt;

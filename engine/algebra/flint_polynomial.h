@@ -18,7 +18,7 @@ namespace sdfwb::algebra::flint {
 Polynomial gcd(const Polynomial& a, const Polynomial& b);
 
 /// a / b when b divides a exactly, else nullopt (b nonzero).
-std::optional<Polynomial> divide_exact(const Polynomial& a, const Polynomial& b);
+std::optional<Polynomial> divideExact(const Polynomial& a, const Polynomial& b);
 
 /// The monic lcm over Q (0 when either is 0). Both in one ring.
 Polynomial lcm(const Polynomial& a, const Polynomial& b);
@@ -29,6 +29,6 @@ Polynomial multiply(const Polynomial& a, const Polynomial& b);
 /// q^e * f(values[0] / q, ..., values[n-1] / q) with e the total degree of
 /// f: one value per variable of f's ring, the values and q in one (other)
 /// ring. Throws std::runtime_error when FLINT's exponents would overflow.
-Polynomial substitute_homogeneous(const Polynomial& f, const std::vector<Polynomial>& values, const Polynomial& q);
+Polynomial substituteHomogeneous(const Polynomial& f, const std::vector<Polynomial>& values, const Polynomial& q);
 
 }  // namespace sdfwb::algebra::flint

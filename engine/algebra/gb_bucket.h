@@ -35,17 +35,17 @@ class Bucket {
     std::size_t i = 0;
     while (capacity(i) < p.size()) ++i;
     if (levels_.size() <= i) levels_.resize(i + 1);
-    merge_into(i, std::move(p));
+    mergeInto(i, std::move(p));
     while (live(i) > capacity(i)) {
       if (levels_.size() <= i + 1) levels_.resize(i + 2);
       Poly<Coeff> moved = take(i);
-      merge_into(i + 1, std::move(moved));
+      mergeInto(i + 1, std::move(moved));
       ++i;
     }
   }
 
   /// Adds factor * shift * (terms [from, end) of p).
-  void add_multiple(const Poly<Coeff>& p, std::size_t from, const Coeff& factor, const Word* shift) {
+  void addMultiple(const Poly<Coeff>& p, std::size_t from, const Coeff& factor, const Word* shift) {
     const std::size_t stride = layout_.stride();
     Poly<Coeff> product = acquire();
     product.mons.resize((p.size() - from) * stride);
@@ -53,7 +53,7 @@ class Bucket {
     for (std::size_t i = from; i < p.size(); ++i) {
       layout_.multiply(product.mons.data() + (i - from) * stride, p.mon(i, stride), shift);
     }
-    domain_.mul_all(product.coeffs.data(), p.coeffs.data() + from, p.size() - from, factor);
+    domain_.mulAll(product.coeffs.data(), p.coeffs.data() + from, p.size() - from, factor);
     add(std::move(product));
   }
 
@@ -68,7 +68,7 @@ class Bucket {
 
   /// Calls f on every coefficient (e.g. to compute or divide out a content).
   template <class F>
-  void for_each_coefficient(F&& f) {
+  void forEachCoefficient(F&& f) {
     for (Level& level : levels_) {
       for (std::size_t i = level.head; i < level.poly.size(); ++i) {
         if (!f(level.poly.coeffs[i])) return;
@@ -77,7 +77,7 @@ class Bucket {
   }
 
   /// Removes the leading term into (mon, coeff); false when the bucket is 0.
-  bool pop_lead(Word* mon, Coeff& coeff) {
+  bool popLead(Word* mon, Coeff& coeff) {
     const std::size_t stride = layout_.stride();
     for (;;) {
       int best = -1;
@@ -91,8 +91,8 @@ class Bucket {
       }
       if (best < 0) return false;
       Level& top = levels_[best];
-      const Word* top_mon = top.poly.mon(top.head, stride);
-      std::copy(top_mon, top_mon + stride, mon);
+      const Word* topMon = top.poly.mon(top.head, stride);
+      std::copy(topMon, topMon + stride, mon);
       coeff = std::move(top.poly.coeffs[top.head]);
       ++top.head;
       for (std::size_t i = 0; i < levels_.size(); ++i) {
@@ -103,11 +103,11 @@ class Bucket {
           ++level.head;
         }
       }
-      if (!Domain::is_zero(coeff)) return true;
+      if (!Domain::isZero(coeff)) return true;
     }
   }
 
-  std::size_t term_count() const {
+  std::size_t termCount() const {
     std::size_t n = 0;
     for (const Level& level : levels_) n += level.poly.size() - level.head;
     return n;
@@ -147,7 +147,7 @@ class Bucket {
   }
 
   // levels_[i] += p, merging two sorted runs.
-  void merge_into(std::size_t i, Poly<Coeff>&& p) {
+  void mergeInto(std::size_t i, Poly<Coeff>&& p) {
     Level& level = levels_[i];
     if (live(i) == 0) {
       release(std::move(level.poly));
@@ -166,20 +166,20 @@ class Bucket {
     if (out.mons.size() < most * stride) out.mons.resize(most * stride);
     // Word coefficients are written in place too (push_back's capacity
     // check per term was a twentieth of a modular run); others are moved in.
-    constexpr bool in_place = std::is_trivially_copyable_v<Coeff>;
+    constexpr bool inPlace = std::is_trivially_copyable_v<Coeff>;
     out.coeffs.clear();
-    if constexpr (in_place) {
+    if constexpr (inPlace) {
       out.coeffs.resize(most);
     } else {
       out.coeffs.reserve(most);
     }
     Word* write = out.mons.data();
-    Coeff* write_coeff = out.coeffs.data();
+    Coeff* writeCoeff = out.coeffs.data();
     auto emit = [&](const Word* mon, Coeff&& c) {
       std::copy_n(mon, stride, write);
       write += stride;
-      if constexpr (in_place) {
-        *write_coeff++ = c;
+      if constexpr (inPlace) {
+        *writeCoeff++ = c;
       } else {
         out.coeffs.push_back(std::move(c));
       }
@@ -195,14 +195,14 @@ class Bucket {
         ++y;
       } else {
         domain_.add(a.coeffs[x], p.coeffs[y]);
-        if (!Domain::is_zero(a.coeffs[x])) emit(a.mon(x, stride), std::move(a.coeffs[x]));
+        if (!Domain::isZero(a.coeffs[x])) emit(a.mon(x, stride), std::move(a.coeffs[x]));
         ++x;
         ++y;
       }
     }
     for (; x < a.size(); ++x) emit(a.mon(x, stride), std::move(a.coeffs[x]));
     for (; y < p.size(); ++y) emit(p.mon(y, stride), std::move(p.coeffs[y]));
-    if constexpr (in_place) out.coeffs.resize(static_cast<std::size_t>(write_coeff - out.coeffs.data()));
+    if constexpr (inPlace) out.coeffs.resize(static_cast<std::size_t>(writeCoeff - out.coeffs.data()));
     out.mons.resize(out.coeffs.size() * stride);
     std::swap(a, out);
     level.head = 0;
@@ -220,7 +220,7 @@ class Bucket {
     return p;
   }
   // A pooled polynomial keeps the size of its monomial array (stale words,
-  // overwritten by whoever takes it: add_multiple resizes, take assigns or
+  // overwritten by whoever takes it: addMultiple resizes, take assigns or
   // swaps), so that reuse does not zero-fill it again.
   void release(Poly<Coeff>&& p) {
     if (pool_.size() >= kPoolSize || p.mons.capacity() == 0) return;

@@ -2,18 +2,18 @@
 
 namespace sdfwb::algebra::gb {
 
-IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* denominator) {
+IntPoly toIntegerPoly(const Polynomial& p, const Layout& layout, mpz_class* denominator) {
   const std::size_t stride = layout.stride();
   mpz_class den = 1;
   for (const Term& t : p.terms()) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), t.coefficient.get_den_mpz_t());
   IntPoly out;
-  out.mons.resize(p.term_count() * stride);
-  out.coeffs.resize(p.term_count());
-  for (std::size_t i = 0; i < p.term_count(); ++i) {
+  out.mons.resize(p.termCount() * stride);
+  out.coeffs.resize(p.termCount());
+  for (std::size_t i = 0; i < p.termCount(); ++i) {
     const Term& t = p.terms()[i];
     Word* m = out.mons.data() + i * stride;
     for (std::size_t v = 0; v < layout.vars(); ++v) m[layout.keys() + v] = static_cast<Word>(t.monomial[v]);
-    layout.encode_keys(m);
+    layout.encodeKeys(m);
     mpz_divexact(out.coeffs[i].get_mpz_t(), den.get_mpz_t(), t.coefficient.get_den_mpz_t());
     out.coeffs[i] *= t.coefficient.get_num();
   }
@@ -21,7 +21,7 @@ IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* de
   return out;
 }
 
-FmpzPoly to_fmpz_poly(const IntPoly& p) {
+FmpzPoly toFmpzPoly(const IntPoly& p) {
   FmpzPoly out;
   out.mons = p.mons;
   out.coeffs.resize(p.size());
@@ -30,7 +30,7 @@ FmpzPoly to_fmpz_poly(const IntPoly& p) {
   return out;
 }
 
-Polynomial to_polynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,
+Polynomial toPolynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,
                          const mpz_class* divisor) {
   const std::size_t stride = layout.stride();
   std::vector<Term> terms;

@@ -9,14 +9,14 @@ namespace sdfwb::algebra::gb {
 
 /// p times the lcm of its coefficient denominators (integer coefficients,
 /// same terms and order). `ring` of p must be the layout's ring.
-IntPoly to_integer_poly(const Polynomial& p, const Layout& layout, mpz_class* denominator = nullptr);
+IntPoly toIntegerPoly(const Polynomial& p, const Layout& layout, mpz_class* denominator = nullptr);
 
 /// The same polynomial with FLINT integers.
-FmpzPoly to_fmpz_poly(const IntPoly& p);
+FmpzPoly toFmpzPoly(const IntPoly& p);
 
 /// Back to a public polynomial, optionally divided by its leading
 /// coefficient; `divisor` (if given) divides every coefficient.
-Polynomial to_polynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,
+Polynomial toPolynomial(const IntPoly& p, const Layout& layout, const RingPtr& ring, bool monic,
                          const mpz_class* divisor = nullptr);
 
 }  // namespace sdfwb::algebra::gb

@@ -9,7 +9,7 @@
 
 namespace sdfwb::algebra::gb {
 
-std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vector<std::string>& eliminated,
+std::vector<Polynomial> modularElimination(const Ideal& ideal, const std::vector<std::string>& eliminated,
                                             const RingPtr& remaining,
                                             const std::function<bool(const Polynomial&)>& contains,
                                             BudgetMonitor& monitor, GroebnerStats& stats,
@@ -23,9 +23,9 @@ std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vecto
       names, order ? *order
                    : MonomialOrder::weighted(weights, MonomialOrder::elimination(k, MonomialOrder::degrevlex(),
                                                                                  remaining->order())));
-  RingPtr homogeneous = homogenized_ring(*base);
+  RingPtr homogeneous = homogenizedRing(*base);
   std::vector<Polynomial> generators;
-  for (const Polynomial& f : ideal.generators()) generators.push_back(homogenize(f.in_ring(base), homogeneous));
+  for (const Polynomial& f : ideal.generators()) generators.push_back(homogenize(f.inRing(base), homogeneous));
 
   const Layout from(*homogeneous);
   const Layout to(*remaining);
@@ -44,7 +44,7 @@ std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vecto
       for (std::size_t t = 0; t < g.size(); ++t) {
         const Word* e = from.exponents(g.mon(t, from.stride()));
         std::copy(e + k, e + k + to.vars(), mon.begin() + static_cast<std::ptrdiff_t>(to.keys()));
-        to.encode_keys(mon.data());
+        to.encodeKeys(mon.data());
         terms.emplace_back(mon, g.coeffs[t]);
       }
       std::sort(terms.begin(), terms.end(),
@@ -54,12 +54,12 @@ std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vecto
       part.push_back(std::move(dehomogenized));
     }
     Engine<ModularDomain> engine(to, domain, monitor);
-    return engine.reduce_basis(std::move(part));
+    return engine.reduceBasis(std::move(part));
   };
   target.verify = [&](const std::vector<Polynomial>& candidate) {
     Progress progress;
     progress.stage = "verification";
-    progress.basis_size = candidate.size();
+    progress.basisSize = candidate.size();
     for (const Polynomial& f : candidate) {
       // A membership test can take long (a substitution, or a basis of the
       // whole ideal) and need not check the budget itself: none starts once
@@ -70,10 +70,10 @@ std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vecto
     const FmpzDomain integers;
     Engine<FmpzDomain> engine(to, integers, monitor);
     std::vector<FmpzPoly> packed;
-    for (const Polynomial& f : candidate) packed.push_back(to_fmpz_poly(to_integer_poly(f, to)));
-    return engine.is_groebner(std::move(packed));
+    for (const Polynomial& f : candidate) packed.push_back(toFmpzPoly(toIntegerPoly(f, to)));
+    return engine.isGroebner(std::move(packed));
   };
-  return modular_groebner(generators, homogeneous, monitor, stats, &target);
+  return modularGroebner(generators, homogeneous, monitor, stats, &target);
 }
 
 }  // namespace sdfwb::algebra::gb

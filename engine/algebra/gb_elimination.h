@@ -31,7 +31,7 @@ namespace sdfwb::algebra::gb {
 /// eliminated ones first) used modulo p in place of the block order above,
 /// e.g. pure lex for the textbook's elimination; still only the
 /// elimination part is lifted and verified.
-std::vector<Polynomial> modular_elimination(const Ideal& ideal, const std::vector<std::string>& eliminated,
+std::vector<Polynomial> modularElimination(const Ideal& ideal, const std::vector<std::string>& eliminated,
                                             const RingPtr& remaining,
                                             const std::function<bool(const Polynomial&)>& contains,
                                             BudgetMonitor& monitor, GroebnerStats& stats,

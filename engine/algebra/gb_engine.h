@@ -47,34 +47,34 @@ class Engine {
   /// The reduced Groebner basis of the input (zero polynomials ignored).
   /// Throws BudgetExceeded at a safe point when the budget runs out.
   /// If `record` is given, the useful steps are recorded into it. With
-  /// `reduce_tails` false the basis is minimal but its tails are not
+  /// `reduceTails` false the basis is minimal but its tails are not
   /// interreduced: for callers that keep part of it and reduce that.
-  std::vector<P> groebner(std::vector<P> input, Trace* record = nullptr, bool reduce_tails = true);
+  std::vector<P> groebner(std::vector<P> input, Trace* record = nullptr, bool reduceTails = true);
 
   /// The reduced basis from the steps of a trace recorded for the same
   /// input modulo another prime; nullopt as soon as a step does not give the
   /// recorded leading monomial (the trace does not fit this prime). The
   /// result is only as good as the trace: the modular algorithm verifies
-  /// what it lifts. `reduce_tails` as for groebner.
-  std::optional<std::vector<P>> replay(std::vector<P> input, const Trace& trace, bool reduce_tails = true);
+  /// what it lifts. `reduceTails` as for groebner.
+  std::optional<std::vector<P>> replay(std::vector<P> input, const Trace& trace, bool reduceTails = true);
 
   /// True if `basis` (nonzero, normalized polynomials) is a Groebner basis:
   /// every S-pair that survives the criteria reduces to zero. Use on a fresh
   /// engine.
-  bool is_groebner(std::vector<P> basis);
+  bool isGroebner(std::vector<P> basis);
 
   /// The reduced Groebner basis from a Groebner basis (not necessarily
   /// minimal or reduced): drops elements with a divisible leading monomial
   /// and reduces the tails.
-  std::vector<P> reduce_basis(std::vector<P> basis);
+  std::vector<P> reduceBasis(std::vector<P> basis);
 
   /// Installs a basis that is already a (reduced or not) Groebner basis, for
-  /// normal_form.
-  void set_basis(std::vector<P> basis);
+  /// normalForm.
+  void setBasis(std::vector<P> basis);
   /// Full normal form of f with respect to the installed basis. Normalized
   /// by the domain, unless `scale` is given: then the result is scale * NF(f)
   /// exactly, with the accumulated factor stored in *scale.
-  P normal_form(P f, Coeff* scale = nullptr);
+  P normalForm(P f, Coeff* scale = nullptr);
 
   const GroebnerStats& stats() const { return stats_; }
 
@@ -87,7 +87,7 @@ class Engine {
   struct Pair {
     std::uint32_t i, j;  // j == kGenerator: input generator i
     std::uint32_t sugar;
-    std::size_t lcm;  // offset into lcm_store_
+    std::size_t lcm;  // offset into lcmStore_
     std::uint64_t mask;  // divmask of the lcm
     bool alive = true;
   };
@@ -95,28 +95,28 @@ class Engine {
   static constexpr std::size_t kContentBits = 64;
 
   const Word* lead(std::uint32_t element) const { return basis_[element].poly.mons.data(); }
-  const Word* pair_lcm(const Pair& pair) const { return lcm_store_.data() + pair.lcm; }
-  int find_reducer(const Word* mon, std::uint64_t mask) const;
+  const Word* pairLcm(const Pair& pair) const { return lcmStore_.data() + pair.lcm; }
+  int findReducer(const Word* mon, std::uint64_t mask) const;
   /// Reduces the bucket completely; `result` holds terms already final.
-  P reduce(P result, std::uint32_t sugar, Coeff* scale_product = nullptr);
+  P reduce(P result, std::uint32_t sugar, Coeff* scaleProduct = nullptr);
   /// Clears the bucket and loads the S-polynomial of elements i and j.
-  void load_s_polynomial(std::uint32_t i, std::uint32_t j, const Word* lcm);
+  void loadSPolynomial(std::uint32_t i, std::uint32_t j, const Word* lcm);
   /// Normalizes the input generators and sets their sugar.
-  void load_generators(std::vector<P>& input);
+  void loadGenerators(std::vector<P>& input);
   /// Interreduces (unless told not to) and returns the non-redundant
   /// elements, sorted.
-  std::vector<P> finish(bool reduce_tails = true);
+  std::vector<P> finish(bool reduceTails = true);
   /// Divides the polynomial under reduction (result and bucket) by its content.
-  void remove_content(P& result);
+  void removeContent(P& result);
   void insert(P h);
-  void push_pair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm);
-  bool pair_before(std::uint32_t a, std::uint32_t b) const;
+  void pushPair(std::uint32_t i, std::uint32_t j, std::uint32_t sugar, const Word* lcm);
+  bool pairBefore(std::uint32_t a, std::uint32_t b) const;
   /// Takes the best live pair off the heap (nullopt when none is left),
   /// counting it and checking the budget at `stage`.
-  std::optional<Pair> next_pair(const char* stage);
+  std::optional<Pair> nextPair(const char* stage);
   void interreduce();
   Progress progress(const char* stage) const;
-  std::size_t own_bytes() const;
+  std::size_t ownBytes() const;
 
   const Layout& layout_;
   const Domain& domain_;
@@ -126,11 +126,11 @@ class Engine {
   std::vector<std::uint32_t> reducers_;  // indices of non-redundant elements
   std::vector<P> generators_;
   std::vector<Pair> pairs_;
-  std::vector<Word> lcm_store_;
+  std::vector<Word> lcmStore_;
   std::vector<std::uint32_t> heap_;  // pair indices, best on top
-  std::vector<Word> lead_term_, shift_;  // reduce's scratch monomials
-  std::size_t live_pairs_ = 0;
-  std::size_t basis_bytes_ = 0;
+  std::vector<Word> leadTerm_, shift_;  // reduce's scratch monomials
+  std::size_t livePairs_ = 0;
+  std::size_t basisBytes_ = 0;
   GroebnerStats stats_;
 };
 

@@ -14,11 +14,11 @@ namespace {
 
 using Exponents = std::vector<Word>;
 
-Exponents exponents_of(const Layout& layout, const Word* mon) {
+Exponents exponentsOf(const Layout& layout, const Word* mon) {
   return Exponents(layout.exponents(mon), layout.exponents(mon) + layout.vars());
 }
 
-bool divisible_by_any(const Exponents& m, const std::vector<Exponents>& leads) {
+bool divisibleByAny(const Exponents& m, const std::vector<Exponents>& leads) {
   for (const Exponents& lead : leads) {
     bool divides = true;
     for (std::size_t v = 0; v < m.size() && divides; ++v) divides = lead[v] <= m[v];
@@ -33,14 +33,14 @@ std::map<Exponents, std::size_t> staircase(const std::vector<Exponents>& leads, 
   std::map<Exponents, std::size_t> index;
   std::vector<Exponents> queue;
   Exponents one(vars, 0);
-  if (divisible_by_any(one, leads)) return index;
+  if (divisibleByAny(one, leads)) return index;
   index.emplace(one, 0);
   queue.push_back(one);
   for (std::size_t next = 0; next < queue.size(); ++next) {
     for (std::size_t v = 0; v < vars; ++v) {
       Exponents m = queue[next];
       ++m[v];
-      if (index.count(m) || divisible_by_any(m, leads)) continue;
+      if (index.count(m) || divisibleByAny(m, leads)) continue;
       index.emplace(m, index.size());
       queue.push_back(std::move(m));
     }
@@ -51,43 +51,43 @@ std::map<Exponents, std::size_t> staircase(const std::vector<Exponents>& leads, 
   return index;
 }
 
-void to_packed(const Layout& layout, const Exponents& e, Word* out) {
+void toPacked(const Layout& layout, const Exponents& e, Word* out) {
   std::copy(e.begin(), e.end(), out + layout.keys());
-  layout.encode_keys(out);
+  layout.encodeKeys(out);
 }
 
 }  // namespace
 
-std::optional<std::size_t> staircase_size(const Layout& layout, const std::vector<const Word*>& leads) {
-  std::vector<Exponents> lead_exponents;
-  for (const Word* lead : leads) lead_exponents.push_back(exponents_of(layout, lead));
-  if (std::any_of(lead_exponents.begin(), lead_exponents.end(),
+std::optional<std::size_t> staircaseSize(const Layout& layout, const std::vector<const Word*>& leads) {
+  std::vector<Exponents> leadExponents;
+  for (const Word* lead : leads) leadExponents.push_back(exponentsOf(layout, lead));
+  if (std::any_of(leadExponents.begin(), leadExponents.end(),
                   [](const Exponents& e) { return std::all_of(e.begin(), e.end(), [](Word x) { return x == 0; }); })) {
     return 0;  // the unit ideal: the quotient is 0
   }
   for (std::size_t v = 0; v < layout.vars(); ++v) {
     bool pure = false;
-    for (const Exponents& e : lead_exponents) {
-      bool only_v = e[v] > 0;
-      for (std::size_t w = 0; w < layout.vars() && only_v; ++w) only_v = w == v || e[w] == 0;
-      pure = pure || only_v;
+    for (const Exponents& e : leadExponents) {
+      bool onlyV = e[v] > 0;
+      for (std::size_t w = 0; w < layout.vars() && onlyV; ++w) onlyV = w == v || e[w] == 0;
+      pure = pure || onlyV;
     }
     if (!pure) return std::nullopt;
   }
   const Budget unlimited;
   BudgetMonitor monitor(unlimited);
-  return staircase(lead_exponents, layout.vars(), monitor).size();
+  return staircase(leadExponents, layout.vars(), monitor).size();
 }
 
-std::optional<MultiplicationTable> multiplication_table(const Layout& source, const std::vector<Poly<mpz_class>>& basis,
+std::optional<MultiplicationTable> multiplicationTable(const Layout& source, const std::vector<Poly<mpz_class>>& basis,
                                                         BudgetMonitor& monitor) {
   std::vector<const Word*> leads;
   for (const Poly<mpz_class>& g : basis) leads.push_back(g.mons.data());
-  if (!staircase_size(source, leads)) return std::nullopt;
+  if (!staircaseSize(source, leads)) return std::nullopt;
   const std::size_t vars = source.vars();
-  std::vector<Exponents> lead_exponents;
-  for (const Word* lead : leads) lead_exponents.push_back(exponents_of(source, lead));
-  const std::map<Exponents, std::size_t> index = staircase(lead_exponents, vars, monitor);
+  std::vector<Exponents> leadExponents;
+  for (const Word* lead : leads) leadExponents.push_back(exponentsOf(source, lead));
+  const std::map<Exponents, std::size_t> index = staircase(leadExponents, vars, monitor);
 
   MultiplicationTable table;
   table.vars = vars;
@@ -98,7 +98,7 @@ std::optional<MultiplicationTable> multiplication_table(const Layout& source, co
 
   const IntegerDomain integers;
   Engine<IntegerDomain> reducer(source, integers, monitor);
-  reducer.set_basis(basis);
+  reducer.setBasis(basis);
   std::vector<Word> packed(source.stride());
   std::size_t bytes = 0;
   for (std::size_t b = 0; b < dim; ++b) {
@@ -113,12 +113,12 @@ std::optional<MultiplicationTable> multiplication_table(const Layout& source, co
         continue;
       }
       Poly<mpz_class> monomial;
-      to_packed(source, m, packed.data());
+      toPacked(source, m, packed.data());
       monomial.push(packed.data(), source.stride(), mpz_class(1));
-      // normal_form with a scale returns scale * NF exactly.
-      Poly<mpz_class> nf = reducer.normal_form(std::move(monomial), &column.denominator);
+      // normalForm with a scale returns scale * NF exactly.
+      Poly<mpz_class> nf = reducer.normalForm(std::move(monomial), &column.denominator);
       for (std::size_t t = 0; t < nf.size(); ++t) {
-        column.rows.push_back(static_cast<std::uint32_t>(index.at(exponents_of(source, nf.mon(t, source.stride())))));
+        column.rows.push_back(static_cast<std::uint32_t>(index.at(exponentsOf(source, nf.mon(t, source.stride())))));
         column.numerators.push_back(std::move(nf.coeffs[t]));
       }
       bytes += column.rows.size() * (sizeof(std::uint32_t) + sizeof(mpz_class));
@@ -139,7 +139,7 @@ struct ExactVector {
 };
 
 // Divides entries and denominator by their common content.
-void remove_content(ExactVector& v) {
+void removeContent(ExactVector& v) {
   mpz_class g = v.denominator;
   for (const mpz_class& e : v.entries) {
     if (g == 1) return;
@@ -152,7 +152,7 @@ void remove_content(ExactVector& v) {
 
 }  // namespace
 
-bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const std::vector<Poly<mpz_class>>& candidate,
+bool allInIdeal(const MultiplicationTable& table, const Layout& target, const std::vector<Poly<mpz_class>>& candidate,
                   BudgetMonitor& monitor) {
   const std::size_t vars = table.vars;
   const std::size_t dim = table.dim();
@@ -175,15 +175,15 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
   progress.stage = "fglm verification";
   // NF(m) = M_v * NF(m / x_v) for the last variable v of m, so that powers
   // of one variable share their chain of parents.
-  std::function<const ExactVector&(const Exponents&)> normal_form = [&](const Exponents& m) -> const ExactVector& {
+  std::function<const ExactVector&(const Exponents&)> normalForm = [&](const Exponents& m) -> const ExactVector& {
     auto found = cache.find(m);
     if (found != cache.end()) return found->second;
     std::size_t v = vars;
     while (m[v - 1] == 0) --v;
     --v;
-    Exponents parent_exponents = m;
-    --parent_exponents[v];
-    const ExactVector& parent = normal_form(parent_exponents);
+    Exponents parentExponents = m;
+    --parentExponents[v];
+    const ExactVector& parent = normalForm(parentExponents);
     ExactVector out;
     out.entries.assign(dim, 0);
     mpz_class factor;
@@ -197,7 +197,7 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
       }
     }
     out.denominator = parent.denominator * scale[v];
-    remove_content(out);
+    removeContent(out);
     for (const mpz_class& e : out.entries) bytes += mpz_size(e.get_mpz_t()) * sizeof(mp_limb_t);
     monitor.check(progress, bytes);
     return cache.emplace(m, std::move(out)).first->second;
@@ -209,7 +209,7 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
     std::vector<const ExactVector*> forms;
     for (std::size_t t = 0; t < l.size(); ++t) {
       const Word* e = target.exponents(l.mon(t, target.stride()));
-      forms.push_back(&normal_form(Exponents(e, e + vars)));
+      forms.push_back(&normalForm(Exponents(e, e + vars)));
       mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), forms.back()->denominator.get_mpz_t());
     }
     std::vector<mpz_class> sum(dim, 0);
@@ -233,16 +233,16 @@ bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const 
   return true;
 }
 
-std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table, const Layout& target,
+std::optional<std::vector<ModPoly>> fglmModulo(const MultiplicationTable& table, const Layout& target,
                                                 const ModularDomain& domain, BudgetMonitor& monitor) {
   const std::size_t vars = table.vars;
   const std::size_t dim = table.dim();
   const std::uint32_t p = domain.p;
-  const std::size_t stride_t = target.stride();
+  const std::size_t strideT = target.stride();
   if (dim == 0) {  // the unit ideal
     ModPoly one;
-    std::vector<Word> m(stride_t, 0);
-    one.push(m.data(), stride_t, 1);
+    std::vector<Word> m(strideT, 0);
+    one.push(m.data(), strideT, 1);
     return std::vector<ModPoly>{one};
   }
 
@@ -251,12 +251,12 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
   struct Entry {
     std::uint32_t row, value;
   };
-  const std::size_t matrix_bytes = vars * dim * sizeof(Entry);
+  const std::size_t matrixBytes = vars * dim * sizeof(Entry);
   Progress progress;
   progress.stage = "fglm";
   std::vector<std::vector<Entry>> matrix(table.columns.size());
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
-    monitor.tick(progress, matrix_bytes);
+    monitor.tick(progress, matrixBytes);
     const MultiplicationTable::Column& column = table.columns[c];
     const auto den = static_cast<std::uint32_t>(mpz_fdiv_ui(column.denominator.get_mpz_t(), p));
     if (den == 0) return std::nullopt;
@@ -275,41 +275,41 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
     std::size_t pivot;
   };
   std::vector<Row> rows;
-  std::vector<Exponents> new_stairs;
-  std::vector<std::vector<std::uint32_t>> new_stair_vectors;
-  std::vector<Exponents> new_leads;
+  std::vector<Exponents> newStairs;
+  std::vector<std::vector<std::uint32_t>> newStairVectors;
+  std::vector<Exponents> newLeads;
   std::vector<ModPoly> result;
 
   auto packed = [&](const Exponents& e) {
-    std::vector<Word> w(stride_t);
-    to_packed(target, e, w.data());
+    std::vector<Word> w(strideT);
+    toPacked(target, e, w.data());
     return w;
   };
-  auto by_target_order = [&](const std::vector<Word>& a, const std::vector<Word>& b) {
+  auto byTargetOrder = [&](const std::vector<Word>& a, const std::vector<Word>& b) {
     return target.compare(a.data(), b.data()) < 0;
   };
   // Candidates (packed in the target layout) with the staircase element and
   // variable they come from.
-  std::map<std::vector<Word>, std::pair<std::size_t, std::size_t>, decltype(by_target_order)> candidates(
-      by_target_order);
+  std::map<std::vector<Word>, std::pair<std::size_t, std::size_t>, decltype(byTargetOrder)> candidates(
+      byTargetOrder);
   candidates.emplace(packed(Exponents(vars, 0)), std::make_pair(SIZE_MAX, 0));
 
   while (!candidates.empty()) {
-    const std::vector<Word> m_packed = candidates.begin()->first;
+    const std::vector<Word> mPacked = candidates.begin()->first;
     const auto origin = candidates.begin()->second;
     candidates.erase(candidates.begin());
-    const Exponents m(target.exponents(m_packed.data()), target.exponents(m_packed.data()) + vars);
-    if (divisible_by_any(m, new_leads)) continue;
-    progress.basis_size = result.size();
-    progress.pairs_left = candidates.size();
-    monitor.tick(progress, matrix_bytes + rows.size() * 2 * dim * sizeof(std::uint32_t));
+    const Exponents m(target.exponents(mPacked.data()), target.exponents(mPacked.data()) + vars);
+    if (divisibleByAny(m, newLeads)) continue;
+    progress.basisSize = result.size();
+    progress.pairsLeft = candidates.size();
+    monitor.tick(progress, matrixBytes + rows.size() * 2 * dim * sizeof(std::uint32_t));
 
     // v = normal form of m, as M_var * NF(parent).
     std::vector<std::uint32_t> v(dim, 0);
     if (origin.first == SIZE_MAX) {
       v[0] = 1;  // stairs[0] is the monomial 1
     } else {
-      const std::vector<std::uint32_t>& parent = new_stair_vectors[origin.first];
+      const std::vector<std::uint32_t>& parent = newStairVectors[origin.first];
       // Products are below 2^62, so an accumulator below p takes three more
       // before it must be reduced.
       std::vector<std::uint64_t> acc(dim, 0);
@@ -327,10 +327,10 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
       }
       for (std::size_t r = 0; r < dim; ++r) v[r] = static_cast<std::uint32_t>(acc[r] % p);
     }
-    const std::vector<std::uint32_t> normal_form = v;
+    const std::vector<std::uint32_t> normalForm = v;
 
     // Reduce by the echelon rows, tracking v = NF(m) - sum a_j NF(S_j).
-    std::vector<std::uint32_t> a(new_stairs.size(), 0);
+    std::vector<std::uint32_t> a(newStairs.size(), 0);
     for (const Row& row : rows) {
       const std::uint32_t f = v[row.pivot];
       if (f == 0) continue;
@@ -352,21 +352,21 @@ std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table
       // NF(m) = sum a_j NF(S_j): m - sum a_j S_j is in the ideal.
       std::vector<std::pair<std::vector<Word>, std::uint32_t>> terms;
       for (std::size_t j = 0; j < a.size(); ++j) {
-        if (a[j] != 0) terms.emplace_back(packed(new_stairs[j]), p - a[j]);
+        if (a[j] != 0) terms.emplace_back(packed(newStairs[j]), p - a[j]);
       }
-      std::sort(terms.begin(), terms.end(), [&](const auto& x, const auto& y) { return by_target_order(y.first, x.first); });
+      std::sort(terms.begin(), terms.end(), [&](const auto& x, const auto& y) { return byTargetOrder(y.first, x.first); });
       ModPoly g;
-      g.push(m_packed.data(), stride_t, 1);
-      for (auto& [w, c] : terms) g.push(w.data(), stride_t, std::uint32_t{c});
+      g.push(mPacked.data(), strideT, 1);
+      for (auto& [w, c] : terms) g.push(w.data(), strideT, std::uint32_t{c});
       result.push_back(std::move(g));
-      new_leads.push_back(m);
+      newLeads.push_back(m);
       continue;
     }
     // A new standard monomial; record the normalized row.
-    const std::size_t index = new_stairs.size();
+    const std::size_t index = newStairs.size();
     if (index >= dim) throw std::logic_error("fglm: staircase larger than the quotient's dimension");
-    new_stairs.push_back(m);
-    new_stair_vectors.push_back(normal_form);
+    newStairs.push_back(m);
+    newStairVectors.push_back(normalForm);
     Row row;
     row.pivot = static_cast<std::size_t>(pivot - v.begin());
     const std::uint32_t inverse = domain.inverse(v[row.pivot]);

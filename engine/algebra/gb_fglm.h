@@ -10,7 +10,7 @@
 // matrices, and finds the target basis as the first linear dependencies:
 // linear algebra only, no S-polynomials, which is what makes lex bases of
 // zero-dimensional systems cheap. The matrices are computed once over Q;
-// the linear algebra runs modulo primes (see modular_fglm).
+// the linear algebra runs modulo primes (see modularFglm).
 
 #include "algebra/budget.h"
 #include "algebra/gb_poly.h"
@@ -37,24 +37,24 @@ struct MultiplicationTable {
 /// Number of standard monomials of the given leading monomials, or nullopt
 /// when the ideal is not zero-dimensional (some variable has no pure power
 /// among them).
-std::optional<std::size_t> staircase_size(const Layout& layout, const std::vector<const Word*>& leads);
+std::optional<std::size_t> staircaseSize(const Layout& layout, const std::vector<const Word*>& leads);
 
 /// The table of the ideal with reduced Groebner basis `basis` (integer
 /// multiples of its elements, in `source`'s order); nullopt when the ideal is
 /// not zero-dimensional. Checks the budget.
-std::optional<MultiplicationTable> multiplication_table(const Layout& source, const std::vector<Poly<mpz_class>>& basis,
+std::optional<MultiplicationTable> multiplicationTable(const Layout& source, const std::vector<Poly<mpz_class>>& basis,
                                                         BudgetMonitor& monitor);
 
 /// Exact check over Q that every candidate polynomial (integer
 /// coefficients, packed in `target`) has normal form 0, i.e. lies in the
 /// ideal: normal forms of monomials come from the table, walking from 1 by
 /// multiplication (fraction-free, content removed), never from S-polynomials.
-bool all_in_ideal(const MultiplicationTable& table, const Layout& target, const std::vector<Poly<mpz_class>>& candidate,
+bool allInIdeal(const MultiplicationTable& table, const Layout& target, const std::vector<Poly<mpz_class>>& candidate,
                   BudgetMonitor& monitor);
 
 /// The reduced basis modulo domain.p in `target`'s order (monic, increasing
 /// leading monomials); nullopt when p divides a denominator of the table.
-std::optional<std::vector<ModPoly>> fglm_modulo(const MultiplicationTable& table, const Layout& target,
+std::optional<std::vector<ModPoly>> fglmModulo(const MultiplicationTable& table, const Layout& target,
                                                 const ModularDomain& domain, BudgetMonitor& monitor);
 
 }  // namespace sdfwb::algebra::gb

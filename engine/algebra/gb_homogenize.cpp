@@ -2,18 +2,18 @@
 
 namespace sdfwb::algebra::gb {
 
-RingPtr homogenized_ring(const Ring& ring) {
+RingPtr homogenizedRing(const Ring& ring) {
   const std::size_t n = ring.size();
   std::vector<std::string> names = ring.variables();
-  names.push_back(internal_variable_name("h", names));
+  names.push_back(internalVariableName("h", names));
   return Ring::make(names, MonomialOrder::weighted(std::vector<std::int64_t>(n + 1, 1),
                                                    MonomialOrder::block({{n, ring.order()}, {1, MonomialOrder::lex()}})));
 }
 
 Polynomial homogenize(const Polynomial& f, const RingPtr& homogeneous) {
-  const std::uint64_t degree = f.total_degree();
+  const std::uint64_t degree = f.totalDegree();
   std::vector<Term> terms;
-  terms.reserve(f.term_count());
+  terms.reserve(f.termCount());
   for (const Term& t : f.terms()) {
     std::vector<Exponent> e = t.monomial.exponents();
     e.push_back(static_cast<Exponent>(degree - t.monomial.degree()));
@@ -24,7 +24,7 @@ Polynomial homogenize(const Polynomial& f, const RingPtr& homogeneous) {
 
 Polynomial dehomogenize(const Polynomial& f, const RingPtr& ring) {
   std::vector<Term> terms;
-  terms.reserve(f.term_count());
+  terms.reserve(f.termCount());
   for (const Term& t : f.terms()) {
     std::vector<Exponent> e = t.monomial.exponents();
     e.pop_back();

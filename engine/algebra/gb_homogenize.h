@@ -13,7 +13,7 @@
 namespace sdfwb::algebra::gb {
 
 /// The ring's variables plus a fresh last variable, ordered as above.
-RingPtr homogenized_ring(const Ring& ring);
+RingPtr homogenizedRing(const Ring& ring);
 /// f with every term multiplied by h^(deg f - deg term), in `homogeneous`.
 Polynomial homogenize(const Polynomial& f, const RingPtr& homogeneous);
 /// f with h = 1, in `ring` (the ring without h).

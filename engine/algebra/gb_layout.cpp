@@ -16,23 +16,23 @@ Layout::Layout(const Ring& ring) : vars_(ring.size()) {
     if (std::any_of(words.begin(), words.end(), [](Word w) { return w != 0; })) matrix_.push_back(std::move(words));
   }
   keys_ = matrix_.size();
-  first_row_is_degree_ =
+  firstRowIsDegree_ =
       keys_ > 0 && std::all_of(matrix_[0].begin(), matrix_[0].end(), [](Word w) { return w >= 0; }) &&
       std::any_of(matrix_[0].begin(), matrix_[0].end(), [](Word w) { return w > 0; });
   stride_ = keys_ + vars_;
   // Spread at most 63 mask bits over the variables: with b bits per
   // variable, bit k says "exponent > k" for k < b, so small exponents are
   // told apart. Variables beyond the 63rd get no bits.
-  mask_bits_ = vars_ == 0 ? 0 : std::max<std::size_t>(1, 63 / vars_);
-  mask_vars_ = vars_ == 0 ? 0 : std::min<std::size_t>(vars_, 63 / mask_bits_);
+  maskBits_ = vars_ == 0 ? 0 : std::max<std::size_t>(1, 63 / vars_);
+  maskVars_ = vars_ == 0 ? 0 : std::min<std::size_t>(vars_, 63 / maskBits_);
 }
 
 void Layout::lcm(Word* out, const Word* a, const Word* b) const {
-  lcm_exponents(out, a, b);
-  encode_keys(out);
+  lcmExponents(out, a, b);
+  encodeKeys(out);
 }
 
-void Layout::encode_keys(Word* out) const {
+void Layout::encodeKeys(Word* out) const {
   const Word* e = out + keys_;
   for (std::size_t r = 0; r < keys_; ++r) {
     std::int64_t sum = 0;
@@ -46,9 +46,9 @@ std::uint64_t Layout::divmask(const Word* m) const {
   // Variable v owns bits [offset, offset + b): the lowest min(e_v, b) are set.
   std::uint64_t mask = 0;
   const Word* e = m + keys_;
-  for (std::size_t v = 0; v < mask_vars_; ++v) {
-    const auto k = static_cast<unsigned>(std::min<Word>(e[v], static_cast<Word>(mask_bits_)));
-    mask |= ((std::uint64_t{1} << k) - 1) << (v * mask_bits_);
+  for (std::size_t v = 0; v < maskVars_; ++v) {
+    const auto k = static_cast<unsigned>(std::min<Word>(e[v], static_cast<Word>(maskBits_)));
+    mask |= ((std::uint64_t{1} << k) - 1) << (v * maskBits_);
   }
   return mask;
 }

@@ -60,12 +60,12 @@ class Layout {
   }
   void lcm(Word* out, const Word* a, const Word* b) const;
   /// The exponents of lcm(a, b) only (out's keys are left unset): enough for
-  /// divides, equal, coprime and divmask; encode_keys completes it.
-  void lcm_exponents(Word* out, const Word* a, const Word* b) const {
+  /// divides, equal, coprime and divmask; encodeKeys completes it.
+  void lcmExponents(Word* out, const Word* a, const Word* b) const {
     for (std::size_t i = keys_; i < stride_; ++i) out[i] = std::max(a[i], b[i]);
   }
   /// Fills the keys from the exponents already stored in out[keys()..].
-  void encode_keys(Word* out) const;
+  void encodeKeys(Word* out) const;
   std::uint32_t degree(const Word* m) const {
     std::uint32_t d = 0;
     for (std::size_t i = keys_; i < stride_; ++i) d += static_cast<std::uint32_t>(m[i]);
@@ -78,8 +78,8 @@ class Layout {
   /// degree that agrees with the order's first criterion keeps elimination
   /// orders from wandering through high total degrees (Singular's pFDeg does
   /// the same).
-  std::uint32_t sugar_degree(const Word* m) const {
-    return first_row_is_degree_ ? static_cast<std::uint32_t>(m[0]) : degree(m);
+  std::uint32_t sugarDegree(const Word* m) const {
+    return firstRowIsDegree_ ? static_cast<std::uint32_t>(m[0]) : degree(m);
   }
   /// Mask with a bit set for each (variable, threshold) the exponent reaches:
   /// divides(a, b) implies (mask(a) & ~mask(b)) == 0.
@@ -87,10 +87,10 @@ class Layout {
 
  private:
   std::size_t vars_, keys_, stride_;
-  bool first_row_is_degree_ = false;
+  bool firstRowIsDegree_ = false;
   std::vector<std::vector<Word>> matrix_;
-  std::size_t mask_bits_ = 0;  // divmask bits per variable
-  std::size_t mask_vars_ = 0;  // variables that get divmask bits
+  std::size_t maskBits_ = 0;  // divmask bits per variable
+  std::size_t maskVars_ = 0;  // variables that get divmask bits
 };
 
 }  // namespace sdfwb::algebra::gb

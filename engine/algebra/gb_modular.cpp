@@ -13,27 +13,27 @@ namespace sdfwb::algebra::gb {
 
 namespace {
 
-std::uint32_t mod_p(const mpz_class& value, std::uint32_t p) {
+std::uint32_t modP(const mpz_class& value, std::uint32_t p) {
   return static_cast<std::uint32_t>(mpz_fdiv_ui(value.get_mpz_t(), p));
 }
 
 // f mod p in the engine's representation; false when p divides a
 // denominator or the leading coefficient (such primes are skipped).
-bool to_modular(const Polynomial& f, const Layout& layout, const ModularDomain& domain, ModPoly& out) {
+bool toModular(const Polynomial& f, const Layout& layout, const ModularDomain& domain, ModPoly& out) {
   const std::size_t stride = layout.stride();
   std::vector<Word> mon(stride);
   out.clear();
   for (const Term& t : f.terms()) {
-    std::uint32_t den = mod_p(t.coefficient.get_den(), domain.p);
+    std::uint32_t den = modP(t.coefficient.get_den(), domain.p);
     if (den == 0) return false;
     std::uint32_t c;
-    domain.mul(c, mod_p(t.coefficient.get_num(), domain.p), domain.inverse(den));
+    domain.mul(c, modP(t.coefficient.get_num(), domain.p), domain.inverse(den));
     if (c == 0) {
       if (&t == &f.terms().front()) return false;
       continue;
     }
     for (std::size_t v = 0; v < layout.vars(); ++v) mon[layout.keys() + v] = static_cast<Word>(t.monomial[v]);
-    layout.encode_keys(mon.data());
+    layout.encodeKeys(mon.data());
     out.push(mon.data(), stride, std::uint32_t{c});
   }
   return true;
@@ -46,7 +46,7 @@ bool to_modular(const Polynomial& f, const Layout& layout, const ModularDomain& 
 Progress lifting(std::size_t polys) {
   Progress progress;
   progress.stage = "lifting";
-  progress.basis_size = polys;
+  progress.basisSize = polys;
   return progress;
 }
 
@@ -56,23 +56,23 @@ struct Group {
   std::vector<IntPoly> polys;
   mpz_class modulus = 1;
   std::size_t primes = 0;
-  std::size_t next_attempt = 0;  // reconstruct once primes reaches this
+  std::size_t nextAttempt = 0;  // reconstruct once primes reaches this
 };
 
 // acc (mod M) and next (mod p) -> residues mod M*p over the union of supports.
-IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& modulus, const ModPoly& next,
+IntPoly chineseRemainder(const Layout& layout, IntPoly& acc, const mpz_class& modulus, const ModPoly& next,
                           std::uint32_t p, BudgetMonitor& monitor, const Progress& progress) {
   const std::size_t stride = layout.stride();
   const ModularDomain domain{p};
-  const std::uint32_t m_inverse = domain.inverse(mod_p(modulus, p));
+  const std::uint32_t mInverse = domain.inverse(modP(modulus, p));
   if (acc.mons == next.mons) {
     // The usual case, the same support modulo both: combined in place.
     for (std::size_t t = 0; t < acc.size(); ++t) {
       mpz_class& r = acc.coeffs[t];
-      const std::uint32_t r_mod = mod_p(r, p);
+      const std::uint32_t rMod = modP(r, p);
       const std::uint32_t c = next.coeffs[t];
       std::uint32_t factor;
-      domain.mul(factor, c >= r_mod ? c - r_mod : c + (p - r_mod), m_inverse);
+      domain.mul(factor, c >= rMod ? c - rMod : c + (p - rMod), mInverse);
       mpz_addmul_ui(r.get_mpz_t(), modulus.get_mpz_t(), factor);
       monitor.tick(progress);
     }
@@ -81,10 +81,10 @@ IntPoly chinese_remainder(const Layout& layout, IntPoly& acc, const mpz_class& m
   IntPoly out;
   auto combine = [&](const Word* mon, mpz_class&& r, std::uint32_t c) {
     // r + M * ((c - r) / M mod p)
-    std::uint32_t r_mod = mod_p(r, p);
-    std::uint32_t diff = c >= r_mod ? c - r_mod : c + (p - r_mod);
+    std::uint32_t rMod = modP(r, p);
+    std::uint32_t diff = c >= rMod ? c - rMod : c + (p - rMod);
     std::uint32_t t;
-    domain.mul(t, diff, m_inverse);
+    domain.mul(t, diff, mInverse);
     mpz_addmul_ui(r.get_mpz_t(), modulus.get_mpz_t(), t);
     out.push(mon, stride, std::move(r));
     monitor.tick(progress);
@@ -119,14 +119,14 @@ void accumulate(const Layout& layout, Group& group, const std::vector<ModPoly>& 
   } else {
     const Progress progress = lifting(basis.size());
     for (std::size_t i = 0; i < basis.size(); ++i) {
-      group.polys[i] = chinese_remainder(layout, group.polys[i], group.modulus, basis[i], p, monitor, progress);
+      group.polys[i] = chineseRemainder(layout, group.polys[i], group.modulus, basis[i], p, monitor, progress);
     }
   }
   group.modulus *= p;
   ++group.primes;
 }
 
-Monomial to_monomial(const Layout& layout, const Word* mon) {
+Monomial toMonomial(const Layout& layout, const Word* mon) {
   Monomial m(layout.vars());
   const Word* e = layout.exponents(mon);
   for (std::size_t v = 0; v < layout.vars(); ++v) m[v] = static_cast<Exponent>(e[v]);
@@ -159,7 +159,7 @@ std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const G
         probe = {i, t};
         return std::nullopt;
       }
-      terms.push_back(Term{to_monomial(layout, g.mon(t, stride)), std::move(q)});
+      terms.push_back(Term{toMonomial(layout, g.mon(t, stride)), std::move(q)});
     }
     out.emplace_back(ring, std::move(terms));
   }
@@ -167,7 +167,7 @@ std::optional<std::vector<Polynomial>> reconstruct(const Layout& layout, const G
 }
 
 // The candidate reduced mod p equals the basis computed mod p.
-bool agrees_modulo(const Layout& layout, const std::vector<Polynomial>& candidate, const std::vector<ModPoly>& basis,
+bool agreesModulo(const Layout& layout, const std::vector<Polynomial>& candidate, const std::vector<ModPoly>& basis,
                    std::uint32_t p, BudgetMonitor& monitor) {
   if (candidate.size() != basis.size()) return false;
   const ModularDomain domain{p};
@@ -177,7 +177,7 @@ bool agrees_modulo(const Layout& layout, const std::vector<Polynomial>& candidat
     // Once per polynomial, as Buchberger's interreduction does: reducing a
     // polynomial with rational coefficients costs far more than the check.
     monitor.check(progress);
-    if (!to_modular(candidate[i], layout, domain, reduced)) return false;
+    if (!toModular(candidate[i], layout, domain, reduced)) return false;
     if (reduced.mons != basis[i].mons || reduced.coeffs != basis[i].coeffs) return false;
   }
   return true;
@@ -188,31 +188,31 @@ bool verify(const Layout& layout, const std::vector<Polynomial>& candidate, cons
             BudgetMonitor& monitor, GroebnerStats& stats) {
   const FmpzDomain domain;
   std::vector<FmpzPoly> packed;
-  for (const Polynomial& g : candidate) packed.push_back(to_fmpz_poly(to_integer_poly(g, layout)));
+  for (const Polynomial& g : candidate) packed.push_back(toFmpzPoly(toIntegerPoly(g, layout)));
   Engine<FmpzDomain> membership(layout, domain, monitor);
-  membership.set_basis(packed);
+  membership.setBasis(packed);
   for (const Polynomial& f : input) {
-    if (f.is_zero()) continue;
-    if (!membership.normal_form(to_fmpz_poly(to_integer_poly(f, layout))).empty()) return false;
+    if (f.isZero()) continue;
+    if (!membership.normalForm(toFmpzPoly(toIntegerPoly(f, layout))).empty()) return false;
   }
   Engine<FmpzDomain> pairs(layout, domain, monitor);
-  bool ok = pairs.is_groebner(std::move(packed));
-  stats.verification_pairs += pairs.stats().pairs_treated;
+  bool ok = pairs.isGroebner(std::move(packed));
+  stats.verificationPairs += pairs.stats().pairsTreated;
   return ok;
 }
 
 }  // namespace
 
-std::uint32_t previous_prime(std::uint32_t below) {
-  auto mul_mod = [](std::uint64_t a, std::uint64_t b, std::uint64_t m) { return a * b % m; };
-  auto pow_mod = [&](std::uint64_t b, std::uint64_t e, std::uint64_t m) {
+std::uint32_t previousPrime(std::uint32_t below) {
+  auto mulMod = [](std::uint64_t a, std::uint64_t b, std::uint64_t m) { return a * b % m; };
+  auto powMod = [&](std::uint64_t b, std::uint64_t e, std::uint64_t m) {
     std::uint64_t r = 1;
-    for (b %= m; e; e >>= 1, b = mul_mod(b, b, m)) {
-      if (e & 1) r = mul_mod(r, b, m);
+    for (b %= m; e; e >>= 1, b = mulMod(b, b, m)) {
+      if (e & 1) r = mulMod(r, b, m);
     }
     return r;
   };
-  auto is_prime = [&](std::uint32_t n) {
+  auto isPrime = [&](std::uint32_t n) {
     if (n < 2) return false;
     for (std::uint32_t small : {2u, 3u, 5u, 7u, 11u, 13u}) {
       if (n % small == 0) return n == small;
@@ -225,11 +225,11 @@ std::uint32_t previous_prime(std::uint32_t below) {
     }
     // Bases 2, 7, 61 decide primality for every n < 2^32.
     for (std::uint64_t a : {2u, 7u, 61u}) {
-      std::uint64_t x = pow_mod(a, d, n);
+      std::uint64_t x = powMod(a, d, n);
       if (x == 1 || x == n - 1) continue;
       bool composite = true;
       for (int r = 1; r < s && composite; ++r) {
-        x = mul_mod(x, x, n);
+        x = mulMod(x, x, n);
         if (x == n - 1) composite = false;
       }
       if (composite) return false;
@@ -237,7 +237,7 @@ std::uint32_t previous_prime(std::uint32_t below) {
     return true;
   };
   for (std::uint32_t n = below - 1; n > 1; --n) {
-    if (is_prime(n)) return n;
+    if (isPrime(n)) return n;
   }
   throw std::logic_error("previous_prime: no prime below " + std::to_string(below));
 }
@@ -277,14 +277,14 @@ class Lifter {
 
   /// The current candidate, if it reduces modulo p to `basis`.
   const std::vector<Polynomial>* agreeing(const std::vector<ModPoly>& basis, std::uint32_t p) const {
-    if (!candidate_ || candidate_group_ != group_of(basis)) return nullptr;
-    return agrees_modulo(layout_, *candidate_, basis, p, monitor_) ? &*candidate_ : nullptr;
+    if (!candidate_ || candidateGroup_ != groupOf(basis)) return nullptr;
+    return agreesModulo(layout_, *candidate_, basis, p, monitor_) ? &*candidate_ : nullptr;
   }
 
   /// Adds a basis modulo p to its group (primes with the same leading
   /// monomials); the largest group proposes the candidate.
   void add(const std::vector<ModPoly>& basis, std::uint32_t p) {
-    std::size_t index = group_of(basis);
+    std::size_t index = groupOf(basis);
     if (index == groups_.size()) {
       groups_.emplace_back();
       leads_.push_back(leads(basis));
@@ -299,12 +299,12 @@ class Lifter {
       // coefficient, so it is attempted on a geometric schedule (at most 1/8
       // more primes than strictly needed) rather than after every prime.
       Group& group = groups_[index];
-      if (group.primes >= group.next_attempt) {
+      if (group.primes >= group.nextAttempt) {
         candidate_ = reconstruct(layout_, group, ring_, probe_, monitor_);
-        candidate_group_ = index;
-        group.next_attempt = group.primes + 1 + group.primes / 8;
+        candidateGroup_ = index;
+        group.nextAttempt = group.primes + 1 + group.primes / 8;
       }
-    } else if (candidate_group_ != largest) {
+    } else if (candidateGroup_ != largest) {
       candidate_.reset();
     }
   }
@@ -315,7 +315,7 @@ class Lifter {
     for (const ModPoly& g : basis) out.insert(out.end(), g.mons.begin(), g.mons.begin() + layout_.stride());
     return out;
   }
-  std::size_t group_of(const std::vector<ModPoly>& basis) const {
+  std::size_t groupOf(const std::vector<ModPoly>& basis) const {
     std::vector<Word> l = leads(basis);
     std::size_t index = 0;
     while (index < leads_.size() && leads_[index] != l) ++index;
@@ -328,7 +328,7 @@ class Lifter {
   std::vector<Group> groups_;
   std::vector<std::vector<Word>> leads_;  // leading monomials of each group
   std::optional<std::vector<Polynomial>> candidate_;
-  std::size_t candidate_group_ = 0;
+  std::size_t candidateGroup_ = 0;
   std::pair<std::size_t, std::size_t> probe_{0, 0};  // see reconstruct
 };
 
@@ -336,22 +336,22 @@ constexpr std::size_t kMaxPrimes = 100000;
 
 }  // namespace
 
-std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, const RingPtr& ring,
+std::vector<Polynomial> modularGroebner(const std::vector<Polynomial>& input, const RingPtr& ring,
                                          BudgetMonitor& monitor, GroebnerStats& stats, const LiftTarget* target) {
   const Layout layout(*ring);
-  const Layout target_layout(target ? *target->ring : *ring);
-  Lifter lifter(target_layout, target ? target->ring : ring, monitor);
+  const Layout targetLayout(target ? *target->ring : *ring);
+  Lifter lifter(targetLayout, target ? target->ring : ring, monitor);
   // The first prime runs Buchberger in full and records its useful steps;
   // later primes replay them, skipping the pairs that reduce to zero. A
   // replay that does not fit runs in full and records a new trace.
   std::optional<Trace> trace;
   std::uint32_t p = 0x80000000u;
   for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
-    p = previous_prime(p);
+    p = previousPrime(p);
     const ModularDomain domain{p};
     std::vector<ModPoly> reduced(input.size());
     bool usable = true;
-    for (std::size_t i = 0; i < input.size() && usable; ++i) usable = to_modular(input[i], layout, domain, reduced[i]);
+    for (std::size_t i = 0; i < input.size() && usable; ++i) usable = toModular(input[i], layout, domain, reduced[i]);
     if (!usable) continue;
     std::optional<std::vector<ModPoly>> replayed;
     if (trace) {
@@ -372,7 +372,7 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
       stats.replays = replays;
     }
     ++stats.primes;
-    monitor.set_primes(stats.primes);
+    monitor.setPrimes(stats.primes);
     if (target) basis = target->extract(std::move(basis), domain);
     if (const std::vector<Polynomial>* candidate = lifter.agreeing(basis, p)) {
       const bool verified =
@@ -384,60 +384,60 @@ std::vector<Polynomial> modular_groebner(const std::vector<Polynomial>& input, c
   throw std::logic_error("modular Groebner basis: no verified result after many primes");
 }
 
-bool zero_dimensional_modulo_a_prime(const std::vector<Polynomial>& input, const RingPtr& ring,
+bool zeroDimensionalModuloAPrime(const std::vector<Polynomial>& input, const RingPtr& ring,
                                      BudgetMonitor& monitor) {
   const Layout layout(*ring);
-  for (std::uint32_t p = previous_prime(0x80000000u);; p = previous_prime(p)) {
+  for (std::uint32_t p = previousPrime(0x80000000u);; p = previousPrime(p)) {
     const ModularDomain domain{p};
     std::vector<ModPoly> reduced(input.size());
     bool usable = true;
-    for (std::size_t i = 0; i < input.size() && usable; ++i) usable = to_modular(input[i], layout, domain, reduced[i]);
+    for (std::size_t i = 0; i < input.size() && usable; ++i) usable = toModular(input[i], layout, domain, reduced[i]);
     if (!usable) continue;
     Engine<ModularDomain> engine(layout, domain, monitor);
     std::vector<ModPoly> basis = engine.groebner(std::move(reduced));
     std::vector<const Word*> leads;
     for (const ModPoly& g : basis) leads.push_back(g.mons.data());
-    return !basis.empty() && staircase_size(layout, leads).has_value();
+    return !basis.empty() && staircaseSize(layout, leads).has_value();
   }
 }
 
-std::optional<std::vector<Polynomial>> modular_fglm(const std::vector<Polynomial>& basis, const RingPtr& target,
+std::optional<std::vector<Polynomial>> modularFglm(const std::vector<Polynomial>& basis, const RingPtr& target,
                                                     BudgetMonitor& monitor, GroebnerStats& stats) {
   if (basis.empty()) return std::nullopt;  // the zero ideal is not zero-dimensional
-  const RingPtr& source_ring = basis.front().ring();
-  const Layout source(*source_ring);
+  const RingPtr& sourceRing = basis.front().ring();
+  const Layout source(*sourceRing);
   const Layout layout(*target);
   std::vector<IntPoly> packed;
   std::vector<const Word*> leads;
-  for (const Polynomial& g : basis) packed.push_back(to_integer_poly(g, source));
+  for (const Polynomial& g : basis) packed.push_back(toIntegerPoly(g, source));
   for (const IntPoly& g : packed) leads.push_back(g.mons.data());
-  const std::optional<std::size_t> dimension = staircase_size(source, leads);
+  const std::optional<std::size_t> dimension = staircaseSize(source, leads);
   if (!dimension) return std::nullopt;
-  const std::optional<MultiplicationTable> table = multiplication_table(source, packed, monitor);
+  const std::optional<MultiplicationTable> table = multiplicationTable(source, packed, monitor);
 
   // Exact check of a candidate L: every element reduces to 0 by the basis
   // (so <L> is inside the ideal) and L's staircase has the quotient's
   // dimension. Then dim Q[x]/<L> <= |staircase(L)| = dim Q[x]/I <= dim
   // Q[x]/<L>, so <L> = I and L is a Groebner basis of it.
   auto verified = [&](const std::vector<Polynomial>& candidate) {
-    std::vector<IntPoly> target_packed;
-    std::vector<const Word*> target_leads;
-    for (const Polynomial& l : candidate) target_packed.push_back(to_integer_poly(l, layout));
-    for (const IntPoly& l : target_packed) target_leads.push_back(l.mons.data());
-    if (staircase_size(layout, target_leads) != dimension) return false;
-    return all_in_ideal(*table, layout, target_packed, monitor);
+    std::vector<IntPoly> targetPacked;
+    std::vector<const Word*> targetLeads;
+    for (const Polynomial& l : candidate) targetPacked.push_back(toIntegerPoly(l, layout));
+    for (const IntPoly& l : targetPacked) targetLeads.push_back(l.mons.data());
+    if (staircaseSize(layout, targetLeads) != dimension) return false;
+    return allInIdeal(*table, layout, targetPacked, monitor);
   };
 
   Lifter lifter(layout, target, monitor);
   std::uint32_t p = 0x80000000u;
   for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
-    p = previous_prime(p);
+    p = previousPrime(p);
     const ModularDomain domain{p};
-    std::optional<std::vector<ModPoly>> modular = fglm_modulo(*table, layout, domain, monitor);
+    std::optional<std::vector<ModPoly>> modular = fglmModulo(*table, layout, domain, monitor);
     if (!modular) continue;
     const std::vector<ModPoly>& converted = *modular;
     ++stats.primes;
-    monitor.set_primes(stats.primes);
+    monitor.setPrimes(stats.primes);
     if (const std::vector<Polynomial>* candidate = lifter.agreeing(converted, p)) {
       if (verified(*candidate)) return *candidate;
     }

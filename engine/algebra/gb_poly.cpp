@@ -18,24 +18,24 @@ void FmpzDomain::normalize(std::vector<Coeff>& coeffs) {
   if (coeffs.empty()) return;
   Coeff g;
   for (const Coeff& c : coeffs) {
-    if (!gcd_above_one(g, c)) break;
+    if (!gcdAboveOne(g, c)) break;
   }
   if (fmpz_sgn(coeffs.front().v) < 0) fmpz_neg(g.v, g.v);
-  if (is_one(g)) return;
-  for (Coeff& c : coeffs) divide_exact(c, g);
+  if (isOne(g)) return;
+  for (Coeff& c : coeffs) divideExact(c, g);
 }
 
 ModularDomain::Coeff ModularDomain::inverse(Coeff a) const {
   // Extended Euclid on (a, p).
-  std::int64_t t = 0, new_t = 1, r = p, new_r = a;
-  while (new_r != 0) {
-    std::int64_t q = r / new_r;
-    std::int64_t tmp = t - q * new_t;
-    t = new_t;
-    new_t = tmp;
-    tmp = r - q * new_r;
-    r = new_r;
-    new_r = tmp;
+  std::int64_t t = 0, newT = 1, r = p, newR = a;
+  while (newR != 0) {
+    std::int64_t q = r / newR;
+    std::int64_t tmp = t - q * newT;
+    t = newT;
+    newT = tmp;
+    tmp = r - q * newR;
+    r = newR;
+    newR = tmp;
   }
   if (t < 0) t += p;
   return static_cast<Coeff>(t);

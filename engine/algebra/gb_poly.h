@@ -83,22 +83,22 @@ struct IntegerDomain {
   using Coeff = mpz_class;
   /// Fraction-free steps make coefficients grow by common factors that the
   /// engine divides out now and then.
-  static constexpr bool has_content = true;
+  static constexpr bool hasContent = true;
 
-  static bool is_zero(const Coeff& c) { return mpz_sgn(c.get_mpz_t()) == 0; }
-  static bool is_one(const Coeff& c) { return mpz_cmp_ui(c.get_mpz_t(), 1) == 0; }
+  static bool isZero(const Coeff& c) { return mpz_sgn(c.get_mpz_t()) == 0; }
+  static bool isOne(const Coeff& c) { return mpz_cmp_ui(c.get_mpz_t(), 1) == 0; }
   static void add(Coeff& a, const Coeff& b) { mpz_add(a.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t()); }
   static void mul(Coeff& out, const Coeff& a, const Coeff& b) {
     mpz_mul(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
   }
   static void negate(Coeff& a) { mpz_neg(a.get_mpz_t(), a.get_mpz_t()); }
   /// out[k] = in[k] * factor for k < n.
-  static void mul_all(Coeff* out, const Coeff* in, std::size_t n, const Coeff& factor) {
+  static void mulAll(Coeff* out, const Coeff* in, std::size_t n, const Coeff& factor) {
     for (std::size_t k = 0; k < n; ++k) mul(out[k], in[k], factor);
   }
   /// scale = a/g, multiplier = c/g with g = gcd(a, c), sign moved into scale
   /// so that scale > 0: then p*scale - multiplier*(reducer) cancels c.
-  static void cancel_factors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
+  static void cancelFactors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
     mpz_gcd(multiplier.get_mpz_t(), a.get_mpz_t(), c.get_mpz_t());
     mpz_divexact(scale.get_mpz_t(), a.get_mpz_t(), multiplier.get_mpz_t());
     mpz_divexact(multiplier.get_mpz_t(), c.get_mpz_t(), multiplier.get_mpz_t());
@@ -112,11 +112,11 @@ struct IntegerDomain {
   /// For the engine's content removal: |c| in bits; g = gcd(g, c), false
   /// once g is 1 (nothing to divide out); c /= g exactly.
   static std::size_t bits(const Coeff& c) { return mpz_sizeinbase(c.get_mpz_t(), 2); }
-  static bool gcd_above_one(Coeff& g, const Coeff& c) {
+  static bool gcdAboveOne(Coeff& g, const Coeff& c) {
     mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
     return mpz_cmp_ui(g.get_mpz_t(), 1) != 0;
   }
-  static void divide_exact(Coeff& c, const Coeff& g) { mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t()); }
+  static void divideExact(Coeff& c, const Coeff& g) { mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t()); }
 };
 
 /// IntegerDomain's arithmetic on FLINT integers, for the exact checks of
@@ -126,18 +126,18 @@ struct IntegerDomain {
 /// integers allocated and freed per term were a third of a verification).
 struct FmpzDomain {
   using Coeff = Fmpz;
-  static constexpr bool has_content = true;
+  static constexpr bool hasContent = true;
 
-  static bool is_zero(const Coeff& c) { return fmpz_is_zero(c.v); }
-  static bool is_one(const Coeff& c) { return fmpz_is_one(c.v); }
+  static bool isZero(const Coeff& c) { return fmpz_is_zero(c.v); }
+  static bool isOne(const Coeff& c) { return fmpz_is_one(c.v); }
   static void add(Coeff& a, const Coeff& b) { fmpz_add(a.v, a.v, b.v); }
   static void mul(Coeff& out, const Coeff& a, const Coeff& b) { fmpz_mul(out.v, a.v, b.v); }
   static void negate(Coeff& a) { fmpz_neg(a.v, a.v); }
-  static void mul_all(Coeff* out, const Coeff* in, std::size_t n, const Coeff& factor) {
+  static void mulAll(Coeff* out, const Coeff* in, std::size_t n, const Coeff& factor) {
     for (std::size_t k = 0; k < n; ++k) fmpz_mul(out[k].v, in[k].v, factor.v);
   }
-  /// As IntegerDomain::cancel_factors.
-  static void cancel_factors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
+  /// As IntegerDomain::cancelFactors.
+  static void cancelFactors(const Coeff& c, const Coeff& a, Coeff& scale, Coeff& multiplier) {
     fmpz_gcd(multiplier.v, a.v, c.v);
     fmpz_divexact(scale.v, a.v, multiplier.v);
     fmpz_divexact(multiplier.v, c.v, multiplier.v);
@@ -148,21 +148,21 @@ struct FmpzDomain {
   }
   static void normalize(std::vector<Coeff>& coeffs);
   static std::size_t bits(const Coeff& c) { return fmpz_bits(c.v); }
-  static bool gcd_above_one(Coeff& g, const Coeff& c) {
+  static bool gcdAboveOne(Coeff& g, const Coeff& c) {
     fmpz_gcd(g.v, g.v, c.v);
     return !fmpz_is_one(g.v);
   }
-  static void divide_exact(Coeff& c, const Coeff& g) { fmpz_divexact(c.v, c.v, g.v); }
+  static void divideExact(Coeff& c, const Coeff& g) { fmpz_divexact(c.v, c.v, g.v); }
 };
 
 /// Z/p for a prime p < 2^31; results are made monic.
 struct ModularDomain {
   using Coeff = std::uint32_t;
-  static constexpr bool has_content = false;
+  static constexpr bool hasContent = false;
   std::uint32_t p;
 
-  static bool is_zero(Coeff c) { return c == 0; }
-  static bool is_one(Coeff c) { return c == 1; }
+  static bool isZero(Coeff c) { return c == 0; }
+  static bool isOne(Coeff c) { return c == 1; }
   // a, b < p < 2^31: the sum fits and needs at most one subtraction.
   void add(Coeff& a, Coeff b) const {
     a += b;
@@ -175,12 +175,12 @@ struct ModularDomain {
   /// (w' = floor(factor * 2^32 / p)): a multiplication, a shift and one
   /// correction per term instead of a 64-bit division. With in[k], factor
   /// < p < 2^31, in[k] * factor - q * p lies in [0, 2p).
-  void mul_all(Coeff* out, const Coeff* in, std::size_t n, Coeff factor) const {
+  void mulAll(Coeff* out, const Coeff* in, std::size_t n, Coeff factor) const {
     const std::uint64_t w = factor;
-    const std::uint64_t w_shoup = (w << 32) / p;
+    const std::uint64_t wShoup = (w << 32) / p;
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint64_t a = in[k];
-      const std::uint64_t q = (a * w_shoup) >> 32;
+      const std::uint64_t q = (a * wShoup) >> 32;
       std::uint64_t r = a * w - q * p;
       if (r >= p) r -= p;
       out[k] = static_cast<Coeff>(r);
@@ -188,7 +188,7 @@ struct ModularDomain {
   }
   void negate(Coeff& a) const { a = a == 0 ? 0 : p - a; }
   Coeff inverse(Coeff a) const;
-  void cancel_factors(Coeff c, Coeff a, Coeff& scale, Coeff& multiplier) const {
+  void cancelFactors(Coeff c, Coeff a, Coeff& scale, Coeff& multiplier) const {
     scale = 1;
     mul(multiplier, c, inverse(a));
   }

@@ -2,7 +2,7 @@
 // Reduced Groebner bases over Q.
 //
 //   auto ring = Ring::make({"x", "y"}, MonomialOrder::lex());
-//   GroebnerResult r = groebner_basis(Ideal(ring, {f1, f2}), {});
+//   GroebnerResult r = groebnerBasis(Ideal(ring, {f1, f2}), {});
 //   if (r.ok()) for (const Polynomial& g : r.basis) std::cout << g << "\n";
 //   else std::cerr << r.message << "\n";  // "gave up after 10.0 s: ..."
 //
@@ -24,22 +24,22 @@ enum class GroebnerMethod {
   /// The fastest exact method we have: modular; for lex, first degrevlex and,
   /// if the ideal is zero-dimensional, FGLM to lex; for other orders that
   /// are not degree orders (block, elimination), via homogenization.
-  automatic,
+  Automatic,
   /// Bases modulo several primes, lifted to Q and verified over Q
   /// (see gb_modular.h for what the verification proves).
-  modular,
+  Modular,
   /// Buchberger directly over Q with fraction-free integer arithmetic; every
   /// step exact, but intermediate coefficients can grow enormously.
-  rational,
+  Rational,
 };
 
 struct GroebnerOptions {
   Budget budget;
-  GroebnerMethod method = GroebnerMethod::automatic;
+  GroebnerMethod method = GroebnerMethod::Automatic;
 };
 
 struct GroebnerResult {
-  Status status = Status::completed;
+  Status status = Status::Completed;
   std::string message;             // empty when completed, else "gave up after ..."
   std::vector<Polynomial> basis;   // empty unless completed
   GroebnerStats stats;
@@ -47,26 +47,26 @@ struct GroebnerResult {
   std::string method;              // what ran: "modular", "modular+fglm", "modular+homogenized",
                                    // "modular+elimination" (eliminate), "rational"
 
-  bool ok() const { return status == Status::completed; }
+  bool ok() const { return status == Status::Completed; }
 };
 
 /// Buchberger's algorithm (sugar selection, Gebauer-Moeller criteria) with
 /// exact fraction-free arithmetic, in the ideal's ring and order.
-GroebnerResult groebner_basis(const Ideal& ideal, const GroebnerOptions& options = {});
+GroebnerResult groebnerBasis(const Ideal& ideal, const GroebnerOptions& options = {});
 
 /// The reduced basis in `target` (same variable names, another order) of the
 /// zero-dimensional ideal whose reduced Groebner basis is `basis`, by FGLM.
 /// Throws std::invalid_argument when the ideal is not zero-dimensional.
-GroebnerResult change_order(const std::vector<Polynomial>& basis, const RingPtr& target,
+GroebnerResult changeOrder(const std::vector<Polynomial>& basis, const RingPtr& target,
                             const GroebnerOptions& options = {});
 
 /// Normal form (remainder) of f by a Groebner basis of its ring, fully
 /// reduced; it is the unique representative of f modulo the ideal. The result
 /// is exact (not scaled).
-Polynomial normal_form(const Polynomial& f, const std::vector<Polynomial>& groebner_basis);
+Polynomial normalForm(const Polynomial& f, const std::vector<Polynomial>& groebnerBasis);
 
 /// True if `basis` is a reduced Groebner basis in the sense above (every
 /// S-polynomial reduces to zero, monic, no reducible term, sorted).
-bool is_reduced_groebner_basis(const std::vector<Polynomial>& basis);
+bool isReducedGroebnerBasis(const std::vector<Polynomial>& basis);
 
 }  // namespace sdfwb::algebra

@@ -11,11 +11,11 @@ namespace sdfwb::algebra {
 
 namespace {
 
-void check_same_ring(const Ideal& i, const Ideal& j, const char* operation) {
+void checkSameRing(const Ideal& i, const Ideal& j, const char* operation) {
   if (!(*i.ring() == *j.ring())) throw std::invalid_argument(std::string(operation) + " of ideals of different rings");
 }
 
-Decision decision_from(const GroebnerResult& result, bool value) {
+Decision decisionFrom(const GroebnerResult& result, bool value) {
   Decision d;
   d.status = result.status;
   d.message = result.message;
@@ -26,7 +26,7 @@ Decision decision_from(const GroebnerResult& result, bool value) {
 
 // The ring's variables with `extra` prepended and a block order that ranks
 // them above the ring's own variables (ordered as before when possible).
-RingPtr with_eliminated_first(const Ring& ring, const std::vector<std::string>& extra) {
+RingPtr withEliminatedFirst(const Ring& ring, const std::vector<std::string>& extra) {
   std::vector<std::string> names = extra;
   names.insert(names.end(), ring.variables().begin(), ring.variables().end());
   return Ring::make(names, MonomialOrder::elimination(extra.size(), MonomialOrder::degrevlex(), ring.order()));
@@ -35,14 +35,14 @@ RingPtr with_eliminated_first(const Ring& ring, const std::vector<std::string>& 
 }  // namespace
 
 Ideal sum(const Ideal& i, const Ideal& j) {
-  check_same_ring(i, j, "sum");
+  checkSameRing(i, j, "sum");
   std::vector<Polynomial> generators = i.generators();
   generators.insert(generators.end(), j.generators().begin(), j.generators().end());
   return Ideal(i.ring(), generators);
 }
 
 Ideal product(const Ideal& i, const Ideal& j) {
-  check_same_ring(i, j, "product");
+  checkSameRing(i, j, "product");
   std::vector<Polynomial> generators;
   for (const Polynomial& f : i.generators()) {
     for (const Polynomial& g : j.generators()) generators.push_back(f * g);
@@ -51,70 +51,70 @@ Ideal product(const Ideal& i, const Ideal& j) {
 }
 
 Decision contains(const Ideal& ideal, const Polynomial& f, const GroebnerOptions& options) {
-  GroebnerResult basis = groebner_basis(ideal, options);
-  if (!basis.ok()) return decision_from(basis, false);
-  return decision_from(basis, normal_form(f.in_ring(ideal.ring()), basis.basis).is_zero());
+  GroebnerResult basis = groebnerBasis(ideal, options);
+  if (!basis.ok()) return decisionFrom(basis, false);
+  return decisionFrom(basis, normalForm(f.inRing(ideal.ring()), basis.basis).isZero());
 }
 
-Decision radical_contains(const Ideal& ideal, const Polynomial& f, const GroebnerOptions& options) {
-  const std::string y = internal_variable_name("y", ideal.ring()->variables());
-  RingPtr ring = with_eliminated_first(*ideal.ring(), {y});
+Decision radicalContains(const Ideal& ideal, const Polynomial& f, const GroebnerOptions& options) {
+  const std::string y = internalVariableName("y", ideal.ring()->variables());
+  RingPtr ring = withEliminatedFirst(*ideal.ring(), {y});
   std::vector<Polynomial> generators;
-  for (const Polynomial& g : ideal.generators()) generators.push_back(g.in_ring(ring));
-  generators.push_back(1 - f.in_ring(ring) * ring->var(y));
-  GroebnerResult basis = groebner_basis(Ideal(ring, generators), options);
-  return decision_from(basis, basis.basis.size() == 1 && basis.basis.front().is_constant());
+  for (const Polynomial& g : ideal.generators()) generators.push_back(g.inRing(ring));
+  generators.push_back(1 - f.inRing(ring) * ring->var(y));
+  GroebnerResult basis = groebnerBasis(Ideal(ring, generators), options);
+  return decisionFrom(basis, basis.basis.size() == 1 && basis.basis.front().isConstant());
 }
 
 GroebnerResult intersection(const Ideal& i, const Ideal& j, const GroebnerOptions& options) {
-  check_same_ring(i, j, "intersection");
-  const std::string t = internal_variable_name("t", i.ring()->variables());
-  RingPtr ring = with_eliminated_first(*i.ring(), {t});
+  checkSameRing(i, j, "intersection");
+  const std::string t = internalVariableName("t", i.ring()->variables());
+  RingPtr ring = withEliminatedFirst(*i.ring(), {t});
   Polynomial tv = ring->var(t);
   std::vector<Polynomial> generators;
-  for (const Polynomial& f : i.generators()) generators.push_back(tv * f.in_ring(ring));
-  for (const Polynomial& g : j.generators()) generators.push_back((1 - tv) * g.in_ring(ring));
-  GroebnerResult result = groebner_basis(Ideal(ring, generators), options);
+  for (const Polynomial& f : i.generators()) generators.push_back(tv * f.inRing(ring));
+  for (const Polynomial& g : j.generators()) generators.push_back((1 - tv) * g.inRing(ring));
+  GroebnerResult result = groebnerBasis(Ideal(ring, generators), options);
   std::vector<Polynomial> kept;
   for (const Polynomial& g : result.basis) {
-    if (!g.contains_variable(0)) kept.push_back(g.in_ring(i.ring()));
+    if (!g.containsVariable(0)) kept.push_back(g.inRing(i.ring()));
   }
   result.basis = std::move(kept);
   return result;
 }
 
 GroebnerResult eliminate(const Ideal& ideal, const std::vector<std::string>& variables,
-                         const GroebnerOptions& options, const MonomialOrder& remaining_order) {
+                         const GroebnerOptions& options, const MonomialOrder& remainingOrder) {
   const Ring& ring = *ideal.ring();
   for (const std::string& v : variables) {
-    if (!ring.index_of(v)) throw std::invalid_argument("eliminate: unknown variable '" + v + "'");
+    if (!ring.indexOf(v)) throw std::invalid_argument("eliminate: unknown variable '" + v + "'");
   }
   std::vector<std::string> eliminated, remaining;
   for (const std::string& v : ring.variables()) {
     bool drop = std::find(variables.begin(), variables.end(), v) != variables.end();
     (drop ? eliminated : remaining).push_back(v);
   }
-  RingPtr remaining_ring = Ring::make(remaining, remaining_order);
-  if (options.method != GroebnerMethod::rational) {
+  RingPtr remainingRing = Ring::make(remaining, remainingOrder);
+  if (options.method != GroebnerMethod::Rational) {
     // Modular, lifting only the elimination ideal; membership of the lifted
     // polynomials is decided by a degrevlex basis of the whole ideal,
     // usually far cheaper than a basis in an elimination order.
     GroebnerResult result;
     result.method = "modular+elimination";
     BudgetMonitor monitor(options.budget);
-    RingPtr degrevlex = ideal.ring()->with_order(MonomialOrder::degrevlex());
+    RingPtr degrevlex = ideal.ring()->withOrder(MonomialOrder::degrevlex());
     std::optional<std::vector<Polynomial>> whole;
-    GroebnerStats whole_stats;
+    GroebnerStats wholeStats;
     auto contains = [&](const Polynomial& f) {
       if (!whole) {
         std::vector<Polynomial> generators;
-        for (const Polynomial& g : ideal.generators()) generators.push_back(g.in_ring(degrevlex));
-        whole = gb::modular_groebner(generators, degrevlex, monitor, whole_stats);
+        for (const Polynomial& g : ideal.generators()) generators.push_back(g.inRing(degrevlex));
+        whole = gb::modularGroebner(generators, degrevlex, monitor, wholeStats);
       }
-      return normal_form(f.in_ring(degrevlex), *whole).is_zero();
+      return normalForm(f.inRing(degrevlex), *whole).isZero();
     };
-    run_within_budget(result, monitor, [&] {
-      result.basis = gb::modular_elimination(ideal, eliminated, remaining_ring, contains, monitor, result.stats);
+    runWithinBudget(result, monitor, [&] {
+      result.basis = gb::modularElimination(ideal, eliminated, remainingRing, contains, monitor, result.stats);
     });
     if (!result.ok()) result.basis.clear();
     return result;
@@ -122,22 +122,22 @@ GroebnerResult eliminate(const Ideal& ideal, const std::vector<std::string>& var
   std::vector<std::string> names = eliminated;
   names.insert(names.end(), remaining.begin(), remaining.end());
   // Elimination order: the degree in the eliminated variables first, then
-  // degrevlex on them and remaining_order on the rest. (A weight vector is
-  // far cheaper than the block order (degrevlex, remaining_order).)
+  // degrevlex on them and remainingOrder on the rest. (A weight vector is
+  // far cheaper than the block order (degrevlex, remainingOrder).)
   std::vector<std::int64_t> weights(names.size(), 0);
   std::fill(weights.begin(), weights.begin() + static_cast<std::ptrdiff_t>(eliminated.size()), 1);
   RingPtr block = Ring::make(
       names, MonomialOrder::weighted(weights, MonomialOrder::elimination(eliminated.size(), MonomialOrder::degrevlex(),
-                                                                         remaining_order)));
-  GroebnerResult result = groebner_basis(Ideal(block, ideal.generators()), options);
+                                                                         remainingOrder)));
+  GroebnerResult result = groebnerBasis(Ideal(block, ideal.generators()), options);
   std::vector<Polynomial> kept;
   for (const Polynomial& g : result.basis) {
     bool free = true;
-    for (std::size_t v = 0; v < eliminated.size() && free; ++v) free = !g.contains_variable(v);
-    if (free) kept.push_back(g.in_ring(remaining_ring));
+    for (std::size_t v = 0; v < eliminated.size() && free; ++v) free = !g.containsVariable(v);
+    if (free) kept.push_back(g.inRing(remainingRing));
   }
   // The basis is sorted by increasing leading monomial in the elimination
-  // order, which agrees with remaining_order on these polynomials.
+  // order, which agrees with remainingOrder on these polynomials.
   result.basis = std::move(kept);
   return result;
 }

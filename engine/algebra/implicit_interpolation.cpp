@@ -64,11 +64,11 @@ struct IntegerPoly {
 struct Homogeneous {
   std::size_t parameters = 0;
   std::vector<IntegerPoly> polys;
-  std::vector<Exponent> max_degree;  // per parameter, over all polys
-  std::uint64_t total_degree = 0;    // over all polys
+  std::vector<Exponent> maxDegree;  // per parameter, over all polys
+  std::uint64_t totalDegree = 0;    // over all polys
 };
 
-Homogeneous homogeneous_form(const ClearedParametrization& c) {
+Homogeneous homogeneousForm(const ClearedParametrization& c) {
   std::vector<const Polynomial*> all{&c.common};
   for (const Polynomial& s : c.scaled) all.push_back(&s);
   Integer den = 1;
@@ -77,7 +77,7 @@ Homogeneous homogeneous_form(const ClearedParametrization& c) {
   }
   Homogeneous h;
   h.parameters = c.ring->size();
-  h.max_degree.assign(h.parameters, 0);
+  h.maxDegree.assign(h.parameters, 0);
   for (const Polynomial* f : all) {
     IntegerPoly poly;
     for (const Term& t : f->terms()) {
@@ -86,21 +86,21 @@ Homogeneous homogeneous_form(const ClearedParametrization& c) {
       fmpz_set_mpz(coefficient.v, scaled.get_num_mpz_t());
       poly.coefficients.push_back(coefficient);
       poly.exponents.push_back(t.monomial.exponents());
-      for (std::size_t v = 0; v < h.parameters; ++v) h.max_degree[v] = std::max(h.max_degree[v], t.monomial[v]);
+      for (std::size_t v = 0; v < h.parameters; ++v) h.maxDegree[v] = std::max(h.maxDegree[v], t.monomial[v]);
     }
-    h.total_degree = std::max(h.total_degree, f->total_degree());
+    h.totalDegree = std::max(h.totalDegree, f->totalDegree());
     h.polys.push_back(std::move(poly));
   }
   return h;
 }
 
 // deg(image) * deg(map) is at most this (see the header); saturates.
-std::uint64_t degree_bound(const Homogeneous& h) {
+std::uint64_t degreeBound(const Homogeneous& h) {
   constexpr std::uint64_t kHuge = std::uint64_t{1} << 40;
   std::uint64_t bezout = 1, multi = 1;
   for (std::size_t v = 0; v < h.parameters; ++v) {
-    bezout = std::min(kHuge, bezout * h.total_degree);
-    multi = std::min(kHuge, multi * h.max_degree[v] * (v + 1));
+    bezout = std::min(kHuge, bezout * h.totalDegree);
+    multi = std::min(kHuge, multi * h.maxDegree[v] * (v + 1));
   }
   return std::min(bezout, multi);
 }
@@ -109,7 +109,7 @@ std::uint64_t degree_bound(const Homogeneous& h) {
 
 // Every exponent vector of total degree `degree` in `variables` variables, in
 // a fixed order (the same for every prime).
-std::vector<std::vector<Exponent>> monomials_of_degree(std::size_t variables, Exponent degree) {
+std::vector<std::vector<Exponent>> monomialsOfDegree(std::size_t variables, Exponent degree) {
   std::vector<std::vector<Exponent>> out;
   std::vector<Exponent> e(variables, 0);
   auto fill = [&](auto&& self, std::size_t v, Exponent left) -> void {
@@ -127,7 +127,7 @@ std::vector<std::vector<Exponent>> monomials_of_degree(std::size_t variables, Ex
   return out;
 }
 
-std::size_t monomial_count(std::size_t variables, std::uint64_t degree) {
+std::size_t monomialCount(std::size_t variables, std::uint64_t degree) {
   // C(degree + variables - 1, variables - 1), saturating far above any limit.
   double count = 1;
   for (std::size_t i = 1; i < variables; ++i) count = count * static_cast<double>(degree + i) / static_cast<double>(i);
@@ -140,13 +140,13 @@ std::size_t monomial_count(std::size_t variables, std::uint64_t degree) {
 struct PrimeImage {
   mp_limb_t prime = 0;
   slong nullity = 0;
-  slong last_nonzero = -1;          // normalization index when nullity == 1
+  slong lastNonzero = -1;          // normalization index when nullity == 1
   std::vector<mp_limb_t> vector;    // when nullity == 1
 };
 
 mp_limb_t residue(const fmpz_t c, nmod_t mod) { return fmpz_fdiv_ui(c, mod.n); }
 
-mp_limb_t evaluate_mod(const IntegerPoly& f, const std::vector<std::vector<mp_limb_t>>& powers,
+mp_limb_t evaluateMod(const IntegerPoly& f, const std::vector<std::vector<mp_limb_t>>& powers,
                        const std::vector<mp_limb_t>& coefficients, nmod_t mod) {
   mp_limb_t sum = 0;
   for (std::size_t t = 0; t < f.exponents.size(); ++t) {
@@ -157,7 +157,7 @@ mp_limb_t evaluate_mod(const IntegerPoly& f, const std::vector<std::vector<mp_li
   return sum;
 }
 
-PrimeImage nullspace_mod(const Homogeneous& h, const std::vector<std::vector<Exponent>>& monomials, Exponent degree,
+PrimeImage nullspaceMod(const Homogeneous& h, const std::vector<std::vector<Exponent>>& monomials, Exponent degree,
                          mp_limb_t prime) {
   nmod_t mod;
   nmod_init(&mod, prime);
@@ -168,24 +168,24 @@ PrimeImage nullspace_mod(const Homogeneous& h, const std::vector<std::vector<Exp
     for (const Fmpz& c : h.polys[j].coefficients) coefficients[j].push_back(residue(c.v, mod));
   }
   std::mt19937_64 random(prime);
-  std::vector<std::vector<mp_limb_t>> parameter_powers(h.parameters);
-  std::vector<std::vector<mp_limb_t>> value_powers(h.polys.size(), std::vector<mp_limb_t>(degree + 1));
+  std::vector<std::vector<mp_limb_t>> parameterPowers(h.parameters);
+  std::vector<std::vector<mp_limb_t>> valuePowers(h.polys.size(), std::vector<mp_limb_t>(degree + 1));
   NmodMat matrix(rows, columns, prime);
   for (slong r = 0; r < rows; ++r) {
     for (std::size_t v = 0; v < h.parameters; ++v) {
       const mp_limb_t t = random() % prime;
-      std::vector<mp_limb_t>& pw = parameter_powers[v];
-      pw.assign(h.max_degree[v] + 1, 1);
+      std::vector<mp_limb_t>& pw = parameterPowers[v];
+      pw.assign(h.maxDegree[v] + 1, 1);
       for (std::size_t k = 1; k < pw.size(); ++k) pw[k] = nmod_mul(pw[k - 1], t, mod);
     }
     for (std::size_t j = 0; j < h.polys.size(); ++j) {
-      const mp_limb_t value = evaluate_mod(h.polys[j], parameter_powers, coefficients[j], mod);
-      value_powers[j][0] = 1;
-      for (Exponent k = 1; k <= degree; ++k) value_powers[j][k] = nmod_mul(value_powers[j][k - 1], value, mod);
+      const mp_limb_t value = evaluateMod(h.polys[j], parameterPowers, coefficients[j], mod);
+      valuePowers[j][0] = 1;
+      for (Exponent k = 1; k <= degree; ++k) valuePowers[j][k] = nmod_mul(valuePowers[j][k - 1], value, mod);
     }
     for (slong c = 0; c < columns; ++c) {
       mp_limb_t entry = 1;
-      for (std::size_t j = 0; j < h.polys.size(); ++j) entry = nmod_mul(entry, value_powers[j][monomials[c][j]], mod);
+      for (std::size_t j = 0; j < h.polys.size(); ++j) entry = nmod_mul(entry, valuePowers[j][monomials[c][j]], mod);
       nmod_mat_entry(matrix.m, r, c) = entry;
     }
   }
@@ -197,9 +197,9 @@ PrimeImage nullspace_mod(const Homogeneous& h, const std::vector<std::vector<Exp
   image.vector.resize(static_cast<std::size_t>(columns));
   for (slong c = 0; c < columns; ++c) {
     image.vector[static_cast<std::size_t>(c)] = nmod_mat_entry(kernel.m, c, 0);
-    if (image.vector[static_cast<std::size_t>(c)] != 0) image.last_nonzero = c;
+    if (image.vector[static_cast<std::size_t>(c)] != 0) image.lastNonzero = c;
   }
-  const mp_limb_t inverse = n_invmod(image.vector[static_cast<std::size_t>(image.last_nonzero)], prime);
+  const mp_limb_t inverse = n_invmod(image.vector[static_cast<std::size_t>(image.lastNonzero)], prime);
   for (mp_limb_t& x : image.vector) x = nmod_mul(x, inverse, mod);
   return image;
 }
@@ -216,10 +216,10 @@ class Lifting {
   void add(const PrimeImage& image) {
     nmod_t mod;
     nmod_init(&mod, image.prime);
-    const mp_limb_t m_inverse = n_invmod(fmpz_fdiv_ui(modulus_.v, image.prime), image.prime);
+    const mp_limb_t mInverse = n_invmod(fmpz_fdiv_ui(modulus_.v, image.prime), image.prime);
     for (std::size_t i = 0; i < residues_.size(); ++i) {
       const mp_limb_t r = fmpz_fdiv_ui(residues_[i].v, image.prime);
-      const mp_limb_t t = nmod_mul(nmod_sub(image.vector[i], r, mod), m_inverse, mod);
+      const mp_limb_t t = nmod_mul(nmod_sub(image.vector[i], r, mod), mInverse, mod);
       fmpz_addmul_ui(residues_[i].v, modulus_.v, t);
     }
     fmpz_mul_ui(modulus_.v, modulus_.v, image.prime);
@@ -257,7 +257,7 @@ bool agrees(const std::vector<Fmpq>& candidate, const PrimeImage& image) {
 
 // Integer coefficients with gcd 1: the candidate times the lcm of its
 // denominators, divided by the gcd of the results.
-std::vector<Fmpz> primitive_integers(const std::vector<Fmpq>& candidate) {
+std::vector<Fmpz> primitiveIntegers(const std::vector<Fmpq>& candidate) {
   Fmpz den, g;
   fmpz_one(den.v);
   for (const Fmpq& c : candidate) fmpz_lcm(den.v, den.v, fmpq_denref(c.v));
@@ -275,21 +275,21 @@ std::vector<Fmpz> primitive_integers(const std::vector<Fmpq>& candidate) {
 
 // F(W(t), X(t)) == 0 at every point of the grid described in the header,
 // evaluated with exact integers. Points are centred on 0 to keep them small.
-bool vanishes_on_grid(const Homogeneous& h, const std::vector<std::vector<Exponent>>& monomials,
+bool vanishesOnGrid(const Homogeneous& h, const std::vector<std::vector<Exponent>>& monomials,
                       const std::vector<Fmpz>& coefficients, Exponent degree, BudgetMonitor& monitor) {
   std::vector<std::uint64_t> extent(h.parameters);
-  for (std::size_t v = 0; v < h.parameters; ++v) extent[v] = std::uint64_t{degree} * h.max_degree[v] + 1;
+  for (std::size_t v = 0; v < h.parameters; ++v) extent[v] = std::uint64_t{degree} * h.maxDegree[v] + 1;
   std::vector<std::uint64_t> index(h.parameters, 0);
-  std::vector<std::vector<Fmpz>> parameter_powers(h.parameters);
-  std::vector<std::vector<Fmpz>> value_powers(h.polys.size(), std::vector<Fmpz>(degree + 1));
+  std::vector<std::vector<Fmpz>> parameterPowers(h.parameters);
+  std::vector<std::vector<Fmpz>> valuePowers(h.polys.size(), std::vector<Fmpz>(degree + 1));
   Fmpz term, sum;
   Progress progress;
   progress.stage = "verification";
   for (;;) {
     monitor.check(progress);
     for (std::size_t v = 0; v < h.parameters; ++v) {
-      std::vector<Fmpz>& pw = parameter_powers[v];
-      pw.assign(h.max_degree[v] + 1, Fmpz());
+      std::vector<Fmpz>& pw = parameterPowers[v];
+      pw.assign(h.maxDegree[v] + 1, Fmpz());
       fmpz_one(pw[0].v);
       const slong t = static_cast<slong>(index[v]) - static_cast<slong>(extent[v] / 2);
       for (std::size_t k = 1; k < pw.size(); ++k) fmpz_mul_si(pw[k].v, pw[k - 1].v, t);
@@ -299,17 +299,17 @@ bool vanishes_on_grid(const Homogeneous& h, const std::vector<std::vector<Expone
       Fmpz value;
       for (std::size_t t = 0; t < f.exponents.size(); ++t) {
         fmpz_set(term.v, f.coefficients[t].v);
-        for (std::size_t v = 0; v < h.parameters; ++v) fmpz_mul(term.v, term.v, parameter_powers[v][f.exponents[t][v]].v);
+        for (std::size_t v = 0; v < h.parameters; ++v) fmpz_mul(term.v, term.v, parameterPowers[v][f.exponents[t][v]].v);
         fmpz_add(value.v, value.v, term.v);
       }
-      fmpz_one(value_powers[j][0].v);
-      for (Exponent k = 1; k <= degree; ++k) fmpz_mul(value_powers[j][k].v, value_powers[j][k - 1].v, value.v);
+      fmpz_one(valuePowers[j][0].v);
+      for (Exponent k = 1; k <= degree; ++k) fmpz_mul(valuePowers[j][k].v, valuePowers[j][k - 1].v, value.v);
     }
     fmpz_zero(sum.v);
     for (std::size_t c = 0; c < monomials.size(); ++c) {
       if (fmpz_is_zero(coefficients[c].v)) continue;
       fmpz_set(term.v, coefficients[c].v);
-      for (std::size_t j = 0; j < h.polys.size(); ++j) fmpz_mul(term.v, term.v, value_powers[j][monomials[c][j]].v);
+      for (std::size_t j = 0; j < h.polys.size(); ++j) fmpz_mul(term.v, term.v, valuePowers[j][monomials[c][j]].v);
       fmpz_add(sum.v, sum.v, term.v);
     }
     if (!fmpz_is_zero(sum.v)) return false;
@@ -319,13 +319,13 @@ bool vanishes_on_grid(const Homogeneous& h, const std::vector<std::vector<Expone
   }
 }
 
-Polynomial to_polynomial(const std::vector<std::vector<Exponent>>& monomials, const std::vector<Fmpz>& coefficients,
-                         const RingPtr& ring, const std::vector<std::size_t>& coordinate_index) {
+Polynomial toPolynomial(const std::vector<std::vector<Exponent>>& monomials, const std::vector<Fmpz>& coefficients,
+                         const RingPtr& ring, const std::vector<std::size_t>& coordinateIndex) {
   std::vector<Term> terms;
   for (std::size_t c = 0; c < monomials.size(); ++c) {
     if (fmpz_is_zero(coefficients[c].v)) continue;
     Monomial m(ring->size());
-    for (std::size_t i = 0; i < coordinate_index.size(); ++i) m[coordinate_index[i]] = monomials[c][i + 1];
+    for (std::size_t i = 0; i < coordinateIndex.size(); ++i) m[coordinateIndex[i]] = monomials[c][i + 1];
     Integer value;
     fmpz_get_mpz(value.get_mpz_t(), coefficients[c].v);
     terms.push_back({std::move(m), Rational(value)});
@@ -333,7 +333,7 @@ Polynomial to_polynomial(const std::vector<std::vector<Exponent>>& monomials, co
   return Polynomial(ring, std::move(terms)).primitive();
 }
 
-std::size_t matrix_bytes(std::size_t columns) { return 2 * (columns + 8) * columns * sizeof(mp_limb_t); }
+std::size_t matrixBytes(std::size_t columns) { return 2 * (columns + 8) * columns * sizeof(mp_limb_t); }
 
 using Monomials = std::vector<std::vector<Exponent>>;
 
@@ -347,25 +347,25 @@ constexpr std::size_t kThreadedColumns = 256;
 // it checking the budget, and on a cancel or a limit leaves it: the thread
 // finishes that one matrix (it owns its inputs) and exits, while the
 // computation reports at once.
-std::future<PrimeImage> start_nullspace(std::shared_ptr<const Homogeneous> h, std::shared_ptr<const Monomials> monomials,
+std::future<PrimeImage> startNullspace(std::shared_ptr<const Homogeneous> h, std::shared_ptr<const Monomials> monomials,
                                         Exponent degree, mp_limb_t prime) {
   if (monomials->size() < kThreadedColumns) {
     std::promise<PrimeImage> ready;
-    ready.set_value(nullspace_mod(*h, *monomials, degree, prime));
+    ready.set_value(nullspaceMod(*h, *monomials, degree, prime));
     return ready.get_future();
   }
   std::packaged_task<PrimeImage()> task(
       [h = std::move(h), monomials = std::move(monomials), degree, prime] {
-        return nullspace_mod(*h, *monomials, degree, prime);
+        return nullspaceMod(*h, *monomials, degree, prime);
       });
   std::future<PrimeImage> result = task.get_future();
   std::thread(std::move(task)).detach();
   return result;
 }
 
-PrimeImage wait_for(std::future<PrimeImage>& image, BudgetMonitor& monitor, const Progress& progress,
-                    std::size_t own_bytes) {
-  while (image.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) monitor.check(progress, own_bytes);
+PrimeImage waitFor(std::future<PrimeImage>& image, BudgetMonitor& monitor, const Progress& progress,
+                    std::size_t ownBytes) {
+  while (image.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) monitor.check(progress, ownBytes);
   return image.get();
 }
 
@@ -375,14 +375,14 @@ bool applies(const RationalParametrization& p) {
 
 }  // namespace
 
-std::optional<double> interpolation_cost(const RationalParametrization& p) {
+std::optional<double> interpolationCost(const RationalParametrization& p) {
   if (!applies(p)) return std::nullopt;
-  const Homogeneous h = homogeneous_form(clear_denominators(p));
-  if (h.total_degree == 0) return std::nullopt;
-  const std::uint64_t bound = degree_bound(h);
+  const Homogeneous h = homogeneousForm(clearDenominators(p));
+  if (h.totalDegree == 0) return std::nullopt;
+  const std::uint64_t bound = degreeBound(h);
   std::size_t columns = 1;
   for (std::uint64_t d = 1; d <= bound && columns <= kMaxInterpolationMonomials; ++d) {
-    columns = monomial_count(h.polys.size(), d);
+    columns = monomialCount(h.polys.size(), d);
   }
   columns = std::min(columns, kMaxInterpolationMonomials);
   // The degree search costs about twice its last matrix (the sizes grow
@@ -392,41 +392,41 @@ std::optional<double> interpolation_cost(const RationalParametrization& p) {
   return kMatrices * n * n * n / 3;
 }
 
-std::optional<Polynomial> implicitize_by_interpolation(const RationalParametrization& p, const RingPtr& coordinates,
+std::optional<Polynomial> implicitizeByInterpolation(const RationalParametrization& p, const RingPtr& coordinates,
                                                        BudgetMonitor& monitor, GroebnerStats& stats) {
   if (!applies(p)) return std::nullopt;
-  const auto shared = std::make_shared<const Homogeneous>(homogeneous_form(clear_denominators(p)));
+  const auto shared = std::make_shared<const Homogeneous>(homogeneousForm(clearDenominators(p)));
   const Homogeneous& h = *shared;
-  if (h.total_degree == 0) return std::nullopt;
+  if (h.totalDegree == 0) return std::nullopt;
   const std::size_t variables = h.polys.size();
-  std::vector<std::size_t> coordinate_index;
-  for (const std::string& name : p.coordinates) coordinate_index.push_back(*coordinates->index_of(name));
+  std::vector<std::size_t> coordinateIndex;
+  for (const std::string& name : p.coordinates) coordinateIndex.push_back(*coordinates->indexOf(name));
 
   Progress progress;
   progress.stage = "interpolation";
-  const std::uint64_t bound = degree_bound(h);
+  const std::uint64_t bound = degreeBound(h);
   const unsigned workers = std::max(1u, std::thread::hardware_concurrency());
   // Word primes above 2^62 - 2^40: nmod arithmetic takes up to 64 bits, and
   // fewer, larger primes mean fewer matrices.
   mp_limb_t prime = (mp_limb_t{1} << 62) - (mp_limb_t{1} << 40);
-  auto next_prime = [&] { return prime = n_nextprime(prime, 1); };
+  auto nextPrime = [&] { return prime = n_nextprime(prime, 1); };
 
   // 1. The degree: the first nonzero nullspace of the search, modulo one
   // prime; a nullspace of dimension above 1 there is given one more prime.
   // Returns 0 when interpolation does not apply.
   PrimeImage first;
-  auto search_degree = [&]() -> Exponent {
+  auto searchDegree = [&]() -> Exponent {
     for (int attempt = 0; attempt < 2; ++attempt) {
-      const mp_limb_t p0 = next_prime();
+      const mp_limb_t p0 = nextPrime();
       ++stats.primes;
       for (std::uint64_t d = 1; d <= bound; ++d) {
-        const std::size_t columns = monomial_count(variables, d);
+        const std::size_t columns = monomialCount(variables, d);
         if (columns > kMaxInterpolationMonomials) return 0;
-        monitor.check(progress, matrix_bytes(columns));
+        monitor.check(progress, matrixBytes(columns));
         const Exponent e = static_cast<Exponent>(d);
         std::future<PrimeImage> image =
-            start_nullspace(shared, std::make_shared<const Monomials>(monomials_of_degree(variables, e)), e, p0);
-        first = wait_for(image, monitor, progress, matrix_bytes(columns));
+            startNullspace(shared, std::make_shared<const Monomials>(monomialsOfDegree(variables, e)), e, p0);
+        first = waitFor(image, monitor, progress, matrixBytes(columns));
         if (first.nullity == 1) return e;
         if (first.nullity > 1) break;
       }
@@ -436,45 +436,45 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
   };
 
   for (;;) {
-    const Exponent degree = search_degree();
+    const Exponent degree = searchDegree();
     if (degree == 0) return std::nullopt;
-    const auto shared_monomials = std::make_shared<const Monomials>(monomials_of_degree(variables, degree));
-    const Monomials& monomials = *shared_monomials;
-    const unsigned batch_size = monomials.size() < kThreadedColumns ? 1 : workers;
-    const std::size_t own_bytes = matrix_bytes(monomials.size()) * batch_size;
+    const auto sharedMonomials = std::make_shared<const Monomials>(monomialsOfDegree(variables, degree));
+    const Monomials& monomials = *sharedMonomials;
+    const unsigned batchSize = monomials.size() < kThreadedColumns ? 1 : workers;
+    const std::size_t ownBytes = matrixBytes(monomials.size()) * batchSize;
 
     // 2.-4. More primes, a batch of one per worker at a time (one at a time
     // when they are computed inline), until a reconstruction agrees with a
     // fresh prime and passes the exact check.
     Lifting lifting(monomials.size());
-    slong normalized_at = first.last_nonzero;
+    slong normalizedAt = first.lastNonzero;
     lifting.add(first);
     std::vector<Fmpq> candidate;
-    bool have_candidate = false, restart = false;
+    bool haveCandidate = false, restart = false;
     while (!restart) {
-      monitor.set_primes(lifting.primes());
-      monitor.check(progress, own_bytes);
+      monitor.setPrimes(lifting.primes());
+      monitor.check(progress, ownBytes);
       std::vector<std::future<PrimeImage>> batch;
-      for (unsigned w = 0; w < batch_size; ++w) {
-        batch.push_back(start_nullspace(shared, shared_monomials, degree, next_prime()));
+      for (unsigned w = 0; w < batchSize; ++w) {
+        batch.push_back(startNullspace(shared, sharedMonomials, degree, nextPrime()));
       }
       for (std::future<PrimeImage>& f : batch) {
-        PrimeImage image = wait_for(f, monitor, progress, own_bytes);
+        PrimeImage image = waitFor(f, monitor, progress, ownBytes);
         ++stats.primes;
         if (restart) continue;
         // A zero nullspace: the first prime's points were unlucky and its
         // degree too small. Search again.
         if (image.nullity == 0) restart = true;
-        if (restart || image.nullity > 1 || image.last_nonzero < normalized_at) continue;  // unlucky prime
-        if (image.last_nonzero > normalized_at) {
+        if (restart || image.nullity > 1 || image.lastNonzero < normalizedAt) continue;  // unlucky prime
+        if (image.lastNonzero > normalizedAt) {
           // Every prime so far lost F's last coefficient: they were the unlucky ones.
           lifting = Lifting(monomials.size());
-          normalized_at = image.last_nonzero;
-          have_candidate = false;
-        } else if (have_candidate && agrees(candidate, image)) {
-          const std::vector<Fmpz> integers = primitive_integers(candidate);
-          if (vanishes_on_grid(h, monomials, integers, degree, monitor)) {
-            return to_polynomial(monomials, integers, coordinates, coordinate_index);
+          normalizedAt = image.lastNonzero;
+          haveCandidate = false;
+        } else if (haveCandidate && agrees(candidate, image)) {
+          const std::vector<Fmpz> integers = primitiveIntegers(candidate);
+          if (vanishesOnGrid(h, monomials, integers, degree, monitor)) {
+            return toPolynomial(monomials, integers, coordinates, coordinateIndex);
           }
           // Only a degree found too small gives a candidate that agrees
           // with a fresh prime and still fails: search again.
@@ -482,7 +482,7 @@ std::optional<Polynomial> implicitize_by_interpolation(const RationalParametriza
           continue;
         }
         lifting.add(image);
-        have_candidate = lifting.reconstruct(candidate);
+        haveCandidate = lifting.reconstruct(candidate);
       }
     }
   }

@@ -56,7 +56,7 @@ inline constexpr std::size_t kMaxInterpolationMonomials = 2024;
 /// kMaxInterpolationMonomials, where the search stops). Nullopt when
 /// interpolation does not apply to the shape of `p` (relations, parameter
 /// count). Cheap: no matrix is built.
-std::optional<double> interpolation_cost(const RationalParametrization& p);
+std::optional<double> interpolationCost(const RationalParametrization& p);
 
 /// The implicit equation of `p` in `coordinates` (a ring of p's coordinates),
 /// primitive with a positive leading coefficient, verified exactly; nullopt
@@ -65,7 +65,7 @@ std::optional<double> interpolation_cost(const RationalParametrization& p);
 /// hypersurface, or more monomials than kMaxInterpolationMonomials before
 /// the degree is found. Reports stages "interpolation" and "verification" to
 /// the monitor; throws BudgetExceeded.
-std::optional<Polynomial> implicitize_by_interpolation(const RationalParametrization& p, const RingPtr& coordinates,
+std::optional<Polynomial> implicitizeByInterpolation(const RationalParametrization& p, const RingPtr& coordinates,
                                                        BudgetMonitor& monitor, GroebnerStats& stats);
 
 }  // namespace sdfwb::algebra

@@ -55,10 +55,10 @@ Fractions prepare(const RationalParametrization& p) {
   f.ring = Ring::make(p.parameters, MonomialOrder::degrevlex());
   auto move = [&](const Polynomial& q, const std::string& what) {
     try {
-      return q.in_ring(f.ring);
+      return q.inRing(f.ring);
     } catch (const std::invalid_argument&) {
       for (std::size_t v = 0; v < q.ring()->size(); ++v) {
-        if (q.contains_variable(v) && !f.ring->index_of(q.ring()->variable(v))) {
+        if (q.containsVariable(v) && !f.ring->indexOf(q.ring()->variable(v))) {
           throw std::invalid_argument("implicitize: " + what + " uses '" + q.ring()->variable(v) +
                                       "', which is not a parameter");
         }
@@ -70,7 +70,7 @@ Fractions prepare(const RationalParametrization& p) {
     f.numerators.push_back(move(p.numerators[i], "the formula for " + p.coordinates[i]));
     f.denominators.push_back(p.denominators.empty() ? f.ring->one()
                                                     : move(p.denominators[i], "the formula for " + p.coordinates[i]));
-    if (f.denominators.back().is_zero()) {
+    if (f.denominators.back().isZero()) {
       throw std::invalid_argument("implicitize: the denominator for " + p.coordinates[i] + " is zero");
     }
   }
@@ -79,42 +79,42 @@ Fractions prepare(const RationalParametrization& p) {
 }
 
 // Cancels common factors and makes every denominator monic.
-void reduce_fractions(Fractions& f) {
+void reduceFractions(Fractions& f) {
   for (std::size_t i = 0; i < f.numerators.size(); ++i) {
     Polynomial& num = f.numerators[i];
     Polynomial& den = f.denominators[i];
     Polynomial g = gcd(num, den);
-    if (!g.is_constant()) {
-      num = *flint::divide_exact(num, g);
-      den = *flint::divide_exact(den, g);
+    if (!g.isConstant()) {
+      num = *flint::divideExact(num, g);
+      den = *flint::divideExact(den, g);
     }
-    Rational lc = den.leading_coefficient();
+    Rational lc = den.leadingCoefficient();
     num /= lc;
     den /= lc;
   }
 }
 
 constexpr EliminationOrderName kEliminationOrders[] = {
-    {EliminationOrder::block_degrevlex, "elimination",
+    {EliminationOrder::BlockDegrevlex, "elimination",
      "parameters > x, y, z; each block by degrevlex (fastest)"},
-    {EliminationOrder::block_deglex, "elimination-deglex", "parameters (degrevlex) > x, y, z by deglex"},
-    {EliminationOrder::block_lex, "elimination-lex", "parameters (degrevlex) > x, y, z by lex"},
-    {EliminationOrder::lex, "lex", "lex over parameters > x > y > z (the textbook's; slowest)"},
+    {EliminationOrder::BlockDeglex, "elimination-deglex", "parameters (degrevlex) > x, y, z by deglex"},
+    {EliminationOrder::BlockLex, "elimination-lex", "parameters (degrevlex) > x, y, z by lex"},
+    {EliminationOrder::Lex, "lex", "lex over parameters > x > y > z (the textbook's; slowest)"},
 };
 
 // The lex basis of the whole ideal, of which the elements free of the
 // eliminated variables are the lex basis of the elimination ideal.
-GroebnerResult lex_elimination(const EliminationProblem& problem, const RingPtr& coordinates,
+GroebnerResult lexElimination(const EliminationProblem& problem, const RingPtr& coordinates,
                                const GroebnerOptions& options) {
   RingPtr lex = Ring::make(problem.ideal.ring()->variables(), MonomialOrder::lex());
   std::vector<Polynomial> generators;
-  for (const Polynomial& g : problem.ideal.generators()) generators.push_back(g.in_ring(lex));
-  GroebnerResult result = groebner_basis(Ideal(lex, generators), options);
+  for (const Polynomial& g : problem.ideal.generators()) generators.push_back(g.inRing(lex));
+  GroebnerResult result = groebnerBasis(Ideal(lex, generators), options);
   std::vector<Polynomial> kept;
   for (const Polynomial& g : result.basis) {
     bool free = true;
-    for (std::size_t v = 0; v < problem.eliminated.size(); ++v) free = free && !g.contains_variable(v);
-    if (free) kept.push_back(g.in_ring(coordinates));
+    for (std::size_t v = 0; v < problem.eliminated.size(); ++v) free = free && !g.containsVariable(v);
+    if (free) kept.push_back(g.inRing(coordinates));
   }
   result.basis = std::move(kept);
   return result;
@@ -122,21 +122,21 @@ GroebnerResult lex_elimination(const EliminationProblem& problem, const RingPtr&
 
 }  // namespace
 
-EliminationProblem implicitization_ideal(const RationalParametrization& p, DenominatorStrategy denominator) {
+EliminationProblem implicitizationIdeal(const RationalParametrization& p, DenominatorStrategy denominator) {
   Fractions f = prepare(p);
-  if (denominator == DenominatorStrategy::lcm) reduce_fractions(f);
+  if (denominator == DenominatorStrategy::Lcm) reduceFractions(f);
 
   // q: lcm of the reduced denominators (or their product).
   Polynomial q = f.ring->one();
   for (const Polynomial& den : f.denominators) {
-    if (den.is_constant()) continue;
-    q = denominator == DenominatorStrategy::lcm ? lcm(q, den) : q * den;
+    if (den.isConstant()) continue;
+    q = denominator == DenominatorStrategy::Lcm ? lcm(q, den) : q * den;
   }
 
   std::vector<std::string> taken = p.parameters;
   taken.insert(taken.end(), p.coordinates.begin(), p.coordinates.end());
   std::vector<std::string> eliminated;
-  if (!q.is_constant()) eliminated.push_back(internal_variable_name("y", taken));
+  if (!q.isConstant()) eliminated.push_back(internalVariableName("y", taken));
   eliminated.insert(eliminated.end(), p.parameters.begin(), p.parameters.end());
   std::vector<std::string> names = eliminated;
   names.insert(names.end(), p.coordinates.begin(), p.coordinates.end());
@@ -144,49 +144,49 @@ EliminationProblem implicitization_ideal(const RationalParametrization& p, Denom
 
   std::vector<Polynomial> generators;
   for (std::size_t i = 0; i < p.coordinates.size(); ++i) {
-    generators.push_back(f.denominators[i].in_ring(ring) * ring->var(p.coordinates[i]) - f.numerators[i].in_ring(ring));
+    generators.push_back(f.denominators[i].inRing(ring) * ring->var(p.coordinates[i]) - f.numerators[i].inRing(ring));
   }
-  if (!q.is_constant()) generators.push_back(1 - q.in_ring(ring) * ring->var(eliminated.front()));
-  for (const Polynomial& r : f.relations) generators.push_back(r.in_ring(ring));
+  if (!q.isConstant()) generators.push_back(1 - q.inRing(ring) * ring->var(eliminated.front()));
+  for (const Polynomial& r : f.relations) generators.push_back(r.inRing(ring));
   return EliminationProblem{Ideal(ring, generators), eliminated};
 }
 
-std::span<const EliminationOrderName> elimination_orders() { return kEliminationOrders; }
+std::span<const EliminationOrderName> eliminationOrders() { return kEliminationOrders; }
 
-std::optional<EliminationOrder> elimination_order_from_name(std::string_view name) {
+std::optional<EliminationOrder> eliminationOrderFromName(std::string_view name) {
   for (const EliminationOrderName& entry : kEliminationOrders) {
     if (entry.name == name) return entry.order;
   }
   return std::nullopt;
 }
 
-MonomialOrder coordinate_order(EliminationOrder order) {
+MonomialOrder coordinateOrder(EliminationOrder order) {
   switch (order) {
-    case EliminationOrder::block_degrevlex: return MonomialOrder::degrevlex();
-    case EliminationOrder::block_deglex: return MonomialOrder::deglex();
-    case EliminationOrder::block_lex:
-    case EliminationOrder::lex: return MonomialOrder::lex();
+    case EliminationOrder::BlockDegrevlex: return MonomialOrder::degrevlex();
+    case EliminationOrder::BlockDeglex: return MonomialOrder::deglex();
+    case EliminationOrder::BlockLex:
+    case EliminationOrder::Lex: return MonomialOrder::lex();
   }
   throw std::invalid_argument("coordinate_order: unknown elimination order");
 }
 
 std::uint64_t ImplicitizationResult::degree() const {
   std::uint64_t degree = 0;
-  for (const Polynomial& g : generators) degree = std::max(degree, g.total_degree());
+  for (const Polynomial& g : generators) degree = std::max(degree, g.totalDegree());
   return degree;
 }
 
-std::size_t ImplicitizationResult::term_count() const {
+std::size_t ImplicitizationResult::termCount() const {
   std::size_t terms = 0;
-  for (const Polynomial& g : generators) terms += g.term_count();
+  for (const Polynomial& g : generators) terms += g.termCount();
   return terms;
 }
 
 namespace {
 
 // g = a*t + r with a a nonzero constant and r free of t: -r/a, else nullopt.
-std::optional<Polynomial> linear_solution(const Polynomial& g, std::size_t t) {
-  if (g.degree_in(t) != 1) return std::nullopt;
+std::optional<Polynomial> linearSolution(const Polynomial& g, std::size_t t) {
+  if (g.degreeIn(t) != 1) return std::nullopt;
   std::optional<Rational> a;
   std::vector<Term> rest;
   for (const Term& term : g.terms()) {
@@ -205,50 +205,50 @@ std::optional<Polynomial> linear_solution(const Polynomial& g, std::size_t t) {
 // <g, 1 - q*y> (or <g>) eliminating y is the saturation <g> : q^oo, which is
 // principal: g without the factors it shares with q. Nullopt for an ideal of
 // another shape.
-std::optional<Polynomial> principal_saturation(const EliminationProblem& problem) {
+std::optional<Polynomial> principalSaturation(const EliminationProblem& problem) {
   if (problem.eliminated.size() > 1) return std::nullopt;
   const Ring& ring = *problem.ideal.ring();
   std::optional<Polynomial> g, q;
   for (const Polynomial& f : problem.ideal.generators()) {
     const std::optional<std::size_t> y =
-        problem.eliminated.empty() ? std::nullopt : ring.index_of(problem.eliminated.front());
-    if (!y || !f.contains_variable(*y)) {
+        problem.eliminated.empty() ? std::nullopt : ring.indexOf(problem.eliminated.front());
+    if (!y || !f.containsVariable(*y)) {
       if (g) return std::nullopt;
       g = f;
       continue;
     }
-    if (q || f.degree_in(*y) != 1) return std::nullopt;
-    std::vector<Term> free, with_y;
+    if (q || f.degreeIn(*y) != 1) return std::nullopt;
+    std::vector<Term> free, withY;
     for (const Term& t : f.terms()) {
       if (t.monomial[*y] == 0) {
         free.push_back(t);
       } else {
         Term reduced = t;
         reduced.monomial[*y] = 0;
-        with_y.push_back(std::move(reduced));
+        withY.push_back(std::move(reduced));
       }
     }
     if (!(Polynomial(f.ring(), std::move(free)) == ring.one())) return std::nullopt;
-    q = -Polynomial(f.ring(), std::move(with_y));
+    q = -Polynomial(f.ring(), std::move(withY));
   }
   if (!g) return std::nullopt;
   if (q) {
-    for (Polynomial d = gcd(*g, *q); !d.is_constant(); d = gcd(*g, *q)) g = *flint::divide_exact(*g, d);
+    for (Polynomial d = gcd(*g, *q); !d.isConstant(); d = gcd(*g, *q)) g = *flint::divideExact(*g, d);
   }
   return g;
 }
 
 }  // namespace
 
-EliminationProblem substitute_linear_parameters(const EliminationProblem& problem) {
+EliminationProblem substituteLinearParameters(const EliminationProblem& problem) {
   const RingPtr& ring = problem.ideal.ring();
   std::vector<Polynomial> generators = problem.ideal.generators();
   std::vector<std::string> kept;
   for (const std::string& name : problem.eliminated) {
-    const std::size_t t = *ring->index_of(name);
+    const std::size_t t = *ring->indexOf(name);
     std::optional<Polynomial> value;
     auto solved = generators.begin();
-    for (; solved != generators.end() && !(value = linear_solution(*solved, t)); ++solved) {
+    for (; solved != generators.end() && !(value = linearSolution(*solved, t)); ++solved) {
     }
     if (!value) {
       kept.push_back(name);
@@ -260,7 +260,7 @@ EliminationProblem substitute_linear_parameters(const EliminationProblem& proble
     std::vector<Polynomial> substituted;
     for (const Polynomial& g : generators) {
       Polynomial h = substitute(g, values);
-      if (!h.is_zero()) substituted.push_back(std::move(h));
+      if (!h.isZero()) substituted.push_back(std::move(h));
     }
     generators = std::move(substituted);
   }
@@ -270,56 +270,56 @@ EliminationProblem substitute_linear_parameters(const EliminationProblem& proble
   }
   RingPtr smaller = Ring::make(names, kept.empty() ? MonomialOrder::degrevlex() : MonomialOrder::elimination(kept.size()));
   std::vector<Polynomial> moved;
-  for (const Polynomial& g : generators) moved.push_back(g.in_ring(smaller));
+  for (const Polynomial& g : generators) moved.push_back(g.inRing(smaller));
   return EliminationProblem{Ideal(smaller, moved), kept};
 }
 
 namespace {
 
-ImplicitizationResult implicitize_with(const RationalParametrization& p, const ImplicitizationOptions& options,
+ImplicitizationResult implicitizeWith(const RationalParametrization& p, const ImplicitizationOptions& options,
                                        BudgetMonitor& monitor) {
-  EliminationProblem problem = implicitization_ideal(p, options.denominator);
+  EliminationProblem problem = implicitizationIdeal(p, options.denominator);
   // The auxiliary variable of Theorem 1.8 comes first when there is one.
-  const bool has_denominator = problem.eliminated.size() > p.parameters.size();
+  const bool hasDenominator = problem.eliminated.size() > p.parameters.size();
   ImplicitizationResult result;
-  result.ring = Ring::make(p.coordinates, coordinate_order(options.order));
-  const bool modular = options.groebner.method != GroebnerMethod::rational;
+  result.ring = Ring::make(p.coordinates, coordinateOrder(options.order));
+  const bool modular = options.groebner.method != GroebnerMethod::Rational;
   std::vector<Polynomial> generators;
   bool done = false, substituted = false;
-  if (options.substitute_linear) {
+  if (options.substituteLinear) {
     const std::size_t before = problem.eliminated.size();
     Progress progress;
     progress.stage = "substitution";
-    run_within_budget(result, monitor, [&] {
+    runWithinBudget(result, monitor, [&] {
       monitor.check(progress);
-      problem = substitute_linear_parameters(problem);
+      problem = substituteLinearParameters(problem);
     });
     if (!result.ok()) return result;
     substituted = problem.eliminated.size() < before;
   }
   // Every parameter solved for: what is left (at most the auxiliary y of
   // Theorem 1.8 to eliminate) is smaller than any interpolation.
-  const bool parameters_left = std::any_of(problem.eliminated.begin(), problem.eliminated.end(),
+  const bool parametersLeft = std::any_of(problem.eliminated.begin(), problem.eliminated.end(),
                                            [&](const std::string& name) { return contains(p.parameters, name); });
-  const std::string elimination_method =
-      !parameters_left ? "substitution" : substituted ? "substitution+elimination" : "elimination";
+  const std::string eliminationMethod =
+      !parametersLeft ? "substitution" : substituted ? "substitution+elimination" : "elimination";
   // A polynomial in the coordinates lies in the elimination ideal exactly
   // when it vanishes on the parametrization, which substitution decides
   // cheaply: the lifted equations are verified that way.
   // The textbook's lex order modulo p, lifting only the elimination part
   // (the lex basis of the whole ideal over Q is never needed).
-  const std::optional<MonomialOrder> whole_order =
-      options.order == EliminationOrder::lex ? std::optional(MonomialOrder::lex()) : std::nullopt;
-  auto modular_elimination = [&] {
-    auto vanishes = [&p](const Polynomial& f) { return substitute_parametrization(f, p).is_zero(); };
-    generators = gb::modular_elimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
-                                         result.stats, whole_order);
+  const std::optional<MonomialOrder> wholeOrder =
+      options.order == EliminationOrder::Lex ? std::optional(MonomialOrder::lex()) : std::nullopt;
+  auto modularElimination = [&] {
+    auto vanishes = [&p](const Polynomial& f) { return substituteParametrization(f, p).isZero(); };
+    generators = gb::modularElimination(problem.ideal, problem.eliminated, result.ring, vanishes, monitor,
+                                         result.stats, wholeOrder);
   };
   const std::optional<double> interpolation =
-      options.interpolate && modular && options.order != EliminationOrder::lex && parameters_left
-          ? interpolation_cost(p)
+      options.interpolate && modular && options.order != EliminationOrder::Lex && parametersLeft
+          ? interpolationCost(p)
           : std::nullopt;
-  if (interpolation && options.elimination_trial && !has_denominator) {
+  if (interpolation && options.eliminationTrial && !hasDenominator) {
     // Interpolation solves dense systems in every monomial of the degree;
     // elimination works on the terms that occur, and is far cheaper when a
     // polynomial parametrization is sparse or one parameter is left. Neither
@@ -330,21 +330,21 @@ ImplicitizationResult implicitize_with(const RationalParametrization& p, const I
     // elimination's degrees by the denominator's, and elimination lost to
     // interpolation on every rational patch and half-angle surface measured
     // (docs/algebra-benchmark.md).
-    monitor.limit_work(static_cast<std::uint64_t>(*interpolation * kEliminationTrialShare));
+    monitor.limitWork(static_cast<std::uint64_t>(*interpolation * kEliminationTrialShare));
     try {
-      run_within_budget(result, monitor, modular_elimination);
+      runWithinBudget(result, monitor, modularElimination);
       done = true;
-      result.method = elimination_method;
+      result.method = eliminationMethod;
     } catch (const WorkLimitReached&) {
       generators.clear();
       result.stats = {};
     }
-    monitor.limit_work(std::nullopt);
+    monitor.limitWork(std::nullopt);
     if (!result.ok()) return result;
   }
   if (interpolation && !done) {
-    run_within_budget(result, monitor, [&] {
-      if (std::optional<Polynomial> f = implicitize_by_interpolation(p, result.ring, monitor, result.stats)) {
+    runWithinBudget(result, monitor, [&] {
+      if (std::optional<Polynomial> f = implicitizeByInterpolation(p, result.ring, monitor, result.stats)) {
         generators.push_back(std::move(*f));
         done = true;
       }
@@ -352,15 +352,15 @@ ImplicitizationResult implicitize_with(const RationalParametrization& p, const I
     if (!result.ok()) return result;
     if (done) result.method = "interpolation";
   }
-  if (!done && !parameters_left) {
-    if (std::optional<Polynomial> g = principal_saturation(problem)) {
-      generators.push_back(g->in_ring(result.ring));
+  if (!done && !parametersLeft) {
+    if (std::optional<Polynomial> g = principalSaturation(problem)) {
+      generators.push_back(g->inRing(result.ring));
       result.method = "substitution";
       done = true;
     }
   }
   if (!done && problem.eliminated.empty()) {
-    GroebnerResult basis = groebner_basis(Ideal(result.ring, problem.ideal.generators()), options.groebner);
+    GroebnerResult basis = groebnerBasis(Ideal(result.ring, problem.ideal.generators()), options.groebner);
     result.status = basis.status;
     result.message = basis.message;
     result.stats = basis.stats;
@@ -368,27 +368,27 @@ ImplicitizationResult implicitize_with(const RationalParametrization& p, const I
     result.method = "substitution";
     done = true;
   }
-  if (!done) result.method = elimination_method;
+  if (!done) result.method = eliminationMethod;
   if (!done && !modular) {
-    GroebnerResult basis = options.order == EliminationOrder::lex
-                               ? lex_elimination(problem, result.ring, options.groebner)
+    GroebnerResult basis = options.order == EliminationOrder::Lex
+                               ? lexElimination(problem, result.ring, options.groebner)
                                : eliminate(problem.ideal, problem.eliminated, options.groebner, result.ring->order());
     result.status = basis.status;
     result.message = basis.message;
     result.stats = basis.stats;
     generators = std::move(basis.basis);
   } else if (!done) {
-    run_within_budget(result, monitor, modular_elimination);
+    runWithinBudget(result, monitor, modularElimination);
   }
-  result.seconds = monitor.elapsed_seconds();
+  result.seconds = monitor.elapsedSeconds();
   if (!result.ok()) return result;
   if (generators.size() == 1) {
     // One equation is the same under every order, so it is normalized and
     // printed under one: degrevlex.
     result.ring = Ring::make(p.coordinates, MonomialOrder::degrevlex());
-    result.generators.push_back(generators.front().in_ring(result.ring).primitive());
+    result.generators.push_back(generators.front().inRing(result.ring).primitive());
   } else {
-    for (const Polynomial& g : generators) result.generators.push_back(g.in_ring(result.ring).primitive());
+    for (const Polynomial& g : generators) result.generators.push_back(g.inRing(result.ring).primitive());
   }
   return result;
 }
@@ -404,64 +404,64 @@ ImplicitizationResult implicitize(const RationalParametrization& p, const Implic
   // some surfaces, and the half-angle form's denominators raise degrees).
   // Under lex too: there the rational form is eliminated, not interpolated,
   // but it is the smaller problem in the same cases.
-  const bool modular = options.groebner.method != GroebnerMethod::rational;
+  const bool modular = options.groebner.method != GroebnerMethod::Rational;
   if (options.interpolate && modular && !p.relations.empty()) {
     prepare(p);  // the input's errors, before any conversion
-    if (std::optional<RationalParametrization> rational = rational_circles(p)) {
-      if (std::optional<double> cost = interpolation_cost(*rational); cost && options.elimination_trial) {
-        monitor.limit_work(static_cast<std::uint64_t>(*cost * kEliminationTrialShare));
+    if (std::optional<RationalParametrization> rational = rationalCircles(p)) {
+      if (std::optional<double> cost = interpolationCost(*rational); cost && options.eliminationTrial) {
+        monitor.limitWork(static_cast<std::uint64_t>(*cost * kEliminationTrialShare));
         try {
-          ImplicitizationResult result = implicitize_with(p, options, monitor);
-          monitor.limit_work(std::nullopt);
+          ImplicitizationResult result = implicitizeWith(p, options, monitor);
+          monitor.limitWork(std::nullopt);
           return result;
         } catch (const WorkLimitReached&) {
-          monitor.limit_work(std::nullopt);
+          monitor.limitWork(std::nullopt);
         }
       }
       if (rational->relations.empty()) {
-        ImplicitizationResult result = implicitize_with(*rational, options, monitor);
+        ImplicitizationResult result = implicitizeWith(*rational, options, monitor);
         result.method = "half-angle+" + result.method;
         return result;
       }
     }
   }
-  return implicitize_with(p, options, monitor);
+  return implicitizeWith(p, options, monitor);
 }
 
-ClearedParametrization clear_denominators(const RationalParametrization& p) {
+ClearedParametrization clearDenominators(const RationalParametrization& p) {
   // Reduced fractions: then every denominator divides the q of Theorem 1.8,
   // a unit modulo the ideal, which makes "substitutes to 0" equivalent to
   // membership in the elimination ideal (implicitize relies on it).
   Fractions f = prepare(p);
-  reduce_fractions(f);
+  reduceFractions(f);
   // x_i = n_i / d_i = (n_i * q/d_i) / q with q = lcm d_i.
   ClearedParametrization c{f.ring, f.ring->one(), {}, std::move(f.relations)};
   for (const Polynomial& den : f.denominators) c.common = lcm(c.common, den);
   for (std::size_t i = 0; i < f.numerators.size(); ++i) {
-    c.scaled.push_back(flint::multiply(f.numerators[i], *flint::divide_exact(c.common, f.denominators[i])));
+    c.scaled.push_back(flint::multiply(f.numerators[i], *flint::divideExact(c.common, f.denominators[i])));
   }
   return c;
 }
 
-Polynomial substitute_parametrization(const Polynomial& implicit, const RationalParametrization& p) {
+Polynomial substituteParametrization(const Polynomial& implicit, const RationalParametrization& p) {
   // With e = deg F, q^e * F(scaled / q) is a polynomial.
-  const ClearedParametrization f = clear_denominators(p);
+  const ClearedParametrization f = clearDenominators(p);
   const Ring& source = *implicit.ring();
   std::vector<Polynomial> values;
   for (std::size_t v = 0; v < source.size(); ++v) {
     auto it = std::find(p.coordinates.begin(), p.coordinates.end(), source.variable(v));
     if (it != p.coordinates.end()) {
       values.push_back(f.scaled[static_cast<std::size_t>(it - p.coordinates.begin())]);
-    } else if (implicit.contains_variable(v)) {
+    } else if (implicit.containsVariable(v)) {
       throw std::invalid_argument("substitute_parametrization: '" + source.variable(v) + "' is not a coordinate");
     } else {
       values.push_back(f.ring->zero());
     }
   }
-  const Polynomial sum = flint::substitute_homogeneous(implicit, values, f.common);
+  const Polynomial sum = flint::substituteHomogeneous(implicit, values, f.common);
   if (f.relations.empty()) return sum;
-  GroebnerResult relations = groebner_basis(Ideal(f.ring, f.relations));
-  return normal_form(sum, relations.basis);
+  GroebnerResult relations = groebnerBasis(Ideal(f.ring, f.relations));
+  return normalForm(sum, relations.basis);
 }
 
 }  // namespace sdfwb::algebra

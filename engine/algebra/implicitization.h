@@ -10,7 +10,7 @@
 //   s = sin(phi) are kept as variables) are added to the ideal.
 //
 // The auxiliary y gets an internal name no user identifier can spell
-// (internal_variable_name), so it never collides with a parameter.
+// (internalVariableName), so it never collides with a parameter.
 
 #include "algebra/groebner.h"
 
@@ -40,8 +40,8 @@ struct RationalParametrization {
 };
 
 enum class DenominatorStrategy {
-  lcm,      // q = lcm of the reduced denominators (the default)
-  product,  // q = product of the denominators as given (for comparison only)
+  Lcm,      // q = lcm of the reduced denominators (the default)
+  Product,  // q = product of the denominators as given (for comparison only)
 };
 
 /// The monomial order of the elimination. Each is an elimination order (a
@@ -52,14 +52,14 @@ enum class DenominatorStrategy {
 enum class EliminationOrder {
   /// Parameters in a degrevlex block above the coordinates, ordered by
   /// degrevlex: the fastest (the default).
-  block_degrevlex,
-  block_deglex,  // the coordinates by deglex
-  block_lex,     // the coordinates by lex
+  BlockDegrevlex,
+  BlockDeglex,  // the coordinates by deglex
+  BlockLex,     // the coordinates by lex
   /// Pure lex over the parameters, then the coordinates: Theorem 1.7 as the
   /// textbook states it. The whole ideal's lex basis is computed modulo
   /// primes (only its elimination part is lifted to Q), so this is the
-  /// slowest; it never interpolates; its result equals block_lex's.
-  lex,
+  /// slowest; it never interpolates; its result equals BlockLex's.
+  Lex,
 };
 
 struct EliminationOrderName {
@@ -68,35 +68,35 @@ struct EliminationOrderName {
   std::string_view description;  // one line for menus and --help
 };
 /// Every choice, the default first.
-std::span<const EliminationOrderName> elimination_orders();
-std::optional<EliminationOrder> elimination_order_from_name(std::string_view name);
+std::span<const EliminationOrderName> eliminationOrders();
+std::optional<EliminationOrder> eliminationOrderFromName(std::string_view name);
 /// The order of the coordinates under `order` (degrevlex, deglex or lex).
-MonomialOrder coordinate_order(EliminationOrder order);
+MonomialOrder coordinateOrder(EliminationOrder order);
 
 struct ImplicitizationOptions {
   GroebnerOptions groebner;  // budget and method
-  DenominatorStrategy denominator = DenominatorStrategy::lcm;
-  EliminationOrder order = EliminationOrder::block_degrevlex;
+  DenominatorStrategy denominator = DenominatorStrategy::Lcm;
+  EliminationOrder order = EliminationOrder::BlockDegrevlex;
   /// Solve for the parameters that occur linearly with a constant
   /// coefficient in an equation and substitute them before any basis
-  /// (substitute_linear_parameters).
-  bool substitute_linear = true;
+  /// (substituteLinearParameters).
+  bool substituteLinear = true;
   /// A hypersurface (one parameter fewer than coordinates, no relations) by
   /// interpolation modulo primes (implicit_interpolation.h), unless the
-  /// method is GroebnerMethod::rational or the order is lex (the textbook's
+  /// method is GroebnerMethod::Rational or the order is lex (the textbook's
   /// elimination, kept for comparison). Elimination where it does not apply.
   bool interpolate = true;
   /// Where interpolation applies to a polynomial parametrization,
   /// elimination first within a share of interpolation's expected cost
   /// (implicitize). False: interpolation straight away.
-  bool elimination_trial = true;
+  bool eliminationTrial = true;
 };
 
 struct ImplicitizationResult {
-  Status status = Status::completed;
+  Status status = Status::Completed;
   std::string message;  // empty when completed, else "gave up after ..."
   /// The ring of the coordinates, coordinates[0] largest, ordered by
-  /// coordinate_order(options.order); degrevlex when there is exactly one
+  /// coordinateOrder(options.order); degrevlex when there is exactly one
   /// generator (which every order gives, up to a factor).
   RingPtr ring;
   /// Reduced Groebner basis of the elimination ideal in `ring`, each
@@ -111,11 +111,11 @@ struct ImplicitizationResult {
   /// a basis of what is left), "substitution+elimination", "elimination".
   std::string method;
 
-  bool ok() const { return status == Status::completed; }
+  bool ok() const { return status == Status::Completed; }
   /// The largest total degree among the generators.
   std::uint64_t degree() const;
   /// The number of terms, summed over the generators.
-  std::size_t term_count() const;
+  std::size_t termCount() const;
 };
 
 /// The ideal whose elimination gives the implicit equations, and the
@@ -127,8 +127,8 @@ struct EliminationProblem {
   Ideal ideal;
   std::vector<std::string> eliminated;
 };
-EliminationProblem implicitization_ideal(const RationalParametrization& parametrization,
-                                         DenominatorStrategy denominator = DenominatorStrategy::lcm);
+EliminationProblem implicitizationIdeal(const RationalParametrization& parametrization,
+                                         DenominatorStrategy denominator = DenominatorStrategy::Lcm);
 
 /// The same elimination ideal with fewer variables: while a generator is
 /// a*t + r with t an eliminated variable, a a nonzero constant and r free of
@@ -136,7 +136,7 @@ EliminationProblem implicitization_ideal(const RationalParametrization& parametr
 /// replaced by -r/a everywhere and that generator dropped. The ring keeps
 /// the eliminated variables left, then the others, with the elimination
 /// order (degrevlex when none is left).
-EliminationProblem substitute_linear_parameters(const EliminationProblem& problem);
+EliminationProblem substituteLinearParameters(const EliminationProblem& problem);
 
 /// Throws std::invalid_argument with one clear line for malformed input
 /// (counts differ, a zero denominator, a coordinate named like a parameter,
@@ -154,12 +154,12 @@ struct ClearedParametrization {
   std::vector<Polynomial> scaled;
   std::vector<Polynomial> relations;
 };
-ClearedParametrization clear_denominators(const RationalParametrization& parametrization);
+ClearedParametrization clearDenominators(const RationalParametrization& parametrization);
 
 /// F evaluated on the parametrization, with denominators cleared and reduced
 /// modulo the relations: zero exactly when F vanishes on the parametrized set
 /// (F is a polynomial in the coordinates, by name). The result lives in the
 /// ring of the parameters (degrevlex).
-Polynomial substitute_parametrization(const Polynomial& f, const RationalParametrization& parametrization);
+Polynomial substituteParametrization(const Polynomial& f, const RationalParametrization& parametrization);
 
 }  // namespace sdfwb::algebra

@@ -11,7 +11,7 @@ std::uint64_t Monomial::degree() const {
   return d;
 }
 
-bool Monomial::is_one() const {
+bool Monomial::isOne() const {
   return std::all_of(exponents_.begin(), exponents_.end(), [](Exponent e) { return e == 0; });
 }
 

@@ -13,8 +13,8 @@ namespace sdfwb::algebra {
 class Monomial {
  public:
   Monomial() = default;
-  /// The monomial 1 in `variable_count` variables.
-  explicit Monomial(std::size_t variable_count) : exponents_(variable_count, 0) {}
+  /// The monomial 1 in `variableCount` variables.
+  explicit Monomial(std::size_t variableCount) : exponents_(variableCount, 0) {}
   explicit Monomial(std::vector<Exponent> exponents) : exponents_(std::move(exponents)) {}
   Monomial(std::initializer_list<Exponent> exponents) : exponents_(exponents) {}
 
@@ -24,7 +24,7 @@ class Monomial {
   const std::vector<Exponent>& exponents() const { return exponents_; }
 
   std::uint64_t degree() const;
-  bool is_one() const;
+  bool isOne() const;
   /// True if this monomial divides `other` (same variable count).
   bool divides(const Monomial& other) const;
 

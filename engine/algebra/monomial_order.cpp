@@ -12,37 +12,37 @@ MonomialOrder::MonomialOrder(MonomialOrder&&) noexcept = default;
 MonomialOrder& MonomialOrder::operator=(const MonomialOrder&) = default;
 MonomialOrder& MonomialOrder::operator=(MonomialOrder&&) noexcept = default;
 
-MonomialOrder MonomialOrder::lex() { return MonomialOrder(Kind::lex); }
-MonomialOrder MonomialOrder::deglex() { return MonomialOrder(Kind::deglex); }
-MonomialOrder MonomialOrder::degrevlex() { return MonomialOrder(Kind::degrevlex); }
+MonomialOrder MonomialOrder::lex() { return MonomialOrder(Kind::Lex); }
+MonomialOrder MonomialOrder::deglex() { return MonomialOrder(Kind::Deglex); }
+MonomialOrder MonomialOrder::degrevlex() { return MonomialOrder(Kind::Degrevlex); }
 
 MonomialOrder MonomialOrder::weighted(std::vector<std::int64_t> weights,
-                                      const MonomialOrder& tie_break) {
+                                      const MonomialOrder& tieBreak) {
   for (std::int64_t w : weights) {
     if (w < 0) throw std::invalid_argument("weighted order: weights must be non-negative");
   }
-  MonomialOrder order(Kind::weighted);
+  MonomialOrder order(Kind::Weighted);
   order.weights_ = std::move(weights);
-  order.tie_break_.push_back(tie_break);
+  order.tieBreak_.push_back(tieBreak);
   return order;
 }
 
 MonomialOrder MonomialOrder::block(std::vector<Block> blocks) {
   if (blocks.empty()) throw std::invalid_argument("block order: no blocks");
-  MonomialOrder order(Kind::block);
+  MonomialOrder order(Kind::Block);
   order.blocks_ = std::move(blocks);
   return order;
 }
 
 MonomialOrder MonomialOrder::elimination(std::size_t eliminated,
-                                         const MonomialOrder& eliminated_order,
-                                         const MonomialOrder& rest_order) {
+                                         const MonomialOrder& eliminatedOrder,
+                                         const MonomialOrder& restOrder) {
   // The rest block's size is only known with the ring; 0 here means "all
   // remaining variables" and is resolved by the block's own checks.
-  return block({Block{eliminated, eliminated_order}, Block{0, rest_order}});
+  return block({Block{eliminated, eliminatedOrder}, Block{0, restOrder}});
 }
 
-std::optional<MonomialOrder> MonomialOrder::from_name(std::string_view name) {
+std::optional<MonomialOrder> MonomialOrder::fromName(std::string_view name) {
   if (name == "lex") return lex();
   if (name == "deglex") return deglex();
   if (name == "degrevlex") return degrevlex();
@@ -52,7 +52,7 @@ std::optional<MonomialOrder> MonomialOrder::from_name(std::string_view name) {
 namespace {
 
 // Sizes of the blocks for `n` variables; a trailing size 0 takes the rest.
-std::vector<std::size_t> block_sizes(const std::vector<MonomialOrder::Block>& blocks,
+std::vector<std::size_t> blockSizes(const std::vector<MonomialOrder::Block>& blocks,
                                      std::size_t n) {
   std::vector<std::size_t> sizes;
   std::size_t used = 0;
@@ -71,22 +71,22 @@ std::vector<std::size_t> block_sizes(const std::vector<MonomialOrder::Block>& bl
 
 }  // namespace
 
-void MonomialOrder::check_fits(std::size_t n) const {
+void MonomialOrder::checkFits(std::size_t n) const {
   switch (kind_) {
-    case Kind::lex:
-    case Kind::deglex:
-    case Kind::degrevlex:
+    case Kind::Lex:
+    case Kind::Deglex:
+    case Kind::Degrevlex:
       return;
-    case Kind::weighted:
+    case Kind::Weighted:
       if (weights_.size() != n) {
         throw std::invalid_argument("weighted order: " + std::to_string(weights_.size()) +
                                     " weights for " + std::to_string(n) + " variables");
       }
-      tie_break_.front().check_fits(n);
+      tieBreak_.front().checkFits(n);
       return;
-    case Kind::block: {
-      std::vector<std::size_t> sizes = block_sizes(blocks_, n);
-      for (std::size_t i = 0; i < blocks_.size(); ++i) blocks_[i].order.check_fits(sizes[i]);
+    case Kind::Block: {
+      std::vector<std::size_t> sizes = blockSizes(blocks_, n);
+      for (std::size_t i = 0; i < blocks_.size(); ++i) blocks_[i].order.checkFits(sizes[i]);
       return;
     }
   }
@@ -100,25 +100,25 @@ std::vector<std::vector<std::int64_t>> MonomialOrder::matrix(std::size_t n) cons
     return row;
   };
   switch (kind_) {
-    case Kind::lex:
+    case Kind::Lex:
       for (std::size_t i = 0; i < n; ++i) rows.push_back(unit(i, 1));
       break;
-    case Kind::deglex:
+    case Kind::Deglex:
       if (n == 0) break;
       rows.emplace_back(n, 1);
       for (std::size_t i = 0; i + 1 < n; ++i) rows.push_back(unit(i, 1));
       break;
-    case Kind::degrevlex:
+    case Kind::Degrevlex:
       if (n == 0) break;
       rows.emplace_back(n, 1);
       for (std::size_t i = n - 1; i >= 1; --i) rows.push_back(unit(i, -1));
       break;
-    case Kind::weighted:
+    case Kind::Weighted:
       rows.push_back(weights_);
-      for (auto& row : tie_break_.front().matrix(n)) rows.push_back(std::move(row));
+      for (auto& row : tieBreak_.front().matrix(n)) rows.push_back(std::move(row));
       break;
-    case Kind::block: {
-      std::vector<std::size_t> sizes = block_sizes(blocks_, n);
+    case Kind::Block: {
+      std::vector<std::size_t> sizes = blockSizes(blocks_, n);
       std::size_t offset = 0;
       for (std::size_t i = 0; i < blocks_.size(); ++i) {
         for (const auto& sub : blocks_[i].order.matrix(sizes[i])) {
@@ -136,21 +136,21 @@ std::vector<std::vector<std::int64_t>> MonomialOrder::matrix(std::size_t n) cons
 
 std::string MonomialOrder::describe() const {
   switch (kind_) {
-    case Kind::lex:
+    case Kind::Lex:
       return "lex";
-    case Kind::deglex:
+    case Kind::Deglex:
       return "deglex";
-    case Kind::degrevlex:
+    case Kind::Degrevlex:
       return "degrevlex";
-    case Kind::weighted: {
+    case Kind::Weighted: {
       std::string text = "weighted(";
       for (std::size_t i = 0; i < weights_.size(); ++i) {
         if (i) text += ",";
         text += std::to_string(weights_[i]);
       }
-      return text + "; " + tie_break_.front().describe() + ")";
+      return text + "; " + tieBreak_.front().describe() + ")";
     }
-    case Kind::block: {
+    case Kind::Block: {
       std::string text = "block(";
       for (std::size_t i = 0; i < blocks_.size(); ++i) {
         if (i) text += ", ";
@@ -164,7 +164,7 @@ std::string MonomialOrder::describe() const {
 }
 
 bool operator==(const MonomialOrder& a, const MonomialOrder& b) {
-  return a.kind_ == b.kind_ && a.weights_ == b.weights_ && a.tie_break_ == b.tie_break_ &&
+  return a.kind_ == b.kind_ && a.weights_ == b.weights_ && a.tieBreak_ == b.tieBreak_ &&
          a.blocks_ == b.blocks_;
 }
 

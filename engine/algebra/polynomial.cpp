@@ -9,7 +9,7 @@ namespace sdfwb::algebra {
 namespace {
 
 // Merges two canonical term lists (sign = +1 adds b, -1 subtracts it).
-std::vector<Term> merge_terms(const Ring& ring, std::vector<Term>&& a, const std::vector<Term>& b,
+std::vector<Term> mergeTerms(const Ring& ring, std::vector<Term>&& a, const std::vector<Term>& b,
                               int sign) {
   std::vector<Term> out;
   out.reserve(a.size() + b.size());
@@ -68,39 +68,39 @@ Polynomial::Polynomial(RingPtr ring, std::vector<Term> terms) : Polynomial(std::
   }
 }
 
-bool Polynomial::is_constant() const {
-  return terms_.empty() || (terms_.size() == 1 && terms_.front().monomial.is_one());
+bool Polynomial::isConstant() const {
+  return terms_.empty() || (terms_.size() == 1 && terms_.front().monomial.isOne());
 }
 
-const Term& Polynomial::leading_term() const {
+const Term& Polynomial::leadingTerm() const {
   if (terms_.empty()) throw std::logic_error("leading term of the zero polynomial");
   return terms_.front();
 }
 
-std::uint64_t Polynomial::total_degree() const {
+std::uint64_t Polynomial::totalDegree() const {
   std::uint64_t d = 0;
   for (const Term& t : terms_) d = std::max(d, t.monomial.degree());
   return d;
 }
 
-Exponent Polynomial::degree_in(std::size_t variable) const {
+Exponent Polynomial::degreeIn(std::size_t variable) const {
   Exponent d = 0;
   for (const Term& t : terms_) d = std::max(d, t.monomial[variable]);
   return d;
 }
 
-bool Polynomial::contains_variable(std::size_t variable) const { return degree_in(variable) > 0; }
+bool Polynomial::containsVariable(std::size_t variable) const { return degreeIn(variable) > 0; }
 
 Polynomial Polynomial::monic() const {
-  if (is_zero()) return *this;
+  if (isZero()) return *this;
   Polynomial p = *this;
-  Rational lc = leading_coefficient();
+  Rational lc = leadingCoefficient();
   for (Term& t : p.terms_) t.coefficient /= lc;
   return p;
 }
 
 Polynomial Polynomial::primitive() const {
-  if (is_zero()) return *this;
+  if (isZero()) return *this;
   // Multiply by the lcm of the denominators, then divide by the gcd of the
   // numerators.
   Integer den = 1, num = 0;
@@ -110,19 +110,19 @@ Polynomial Polynomial::primitive() const {
   }
   Rational scale(den, num);
   scale.canonicalize();
-  if (sgn(leading_coefficient()) < 0) scale = -scale;
+  if (sgn(leadingCoefficient()) < 0) scale = -scale;
   Polynomial p = *this;
   for (Term& t : p.terms_) t.coefficient *= scale;
   return p;
 }
 
-Polynomial Polynomial::in_ring(const RingPtr& target) const {
+Polynomial Polynomial::inRing(const RingPtr& target) const {
   if (*target == *ring_) return Polynomial(target, terms_);
   std::vector<std::size_t> map(ring_->size());
   for (std::size_t i = 0; i < ring_->size(); ++i) {
-    std::optional<std::size_t> j = target->index_of(ring_->variable(i));
+    std::optional<std::size_t> j = target->indexOf(ring_->variable(i));
     if (!j) {
-      if (contains_variable(i)) {
+      if (containsVariable(i)) {
         throw std::invalid_argument("variable '" + ring_->variable(i) +
                                     "' does not exist in the target ring");
       }
@@ -143,7 +143,7 @@ Polynomial Polynomial::in_ring(const RingPtr& target) const {
   return Polynomial(target, std::move(terms));
 }
 
-void Polynomial::check_same_ring(const Polynomial& other, const char* operation) const {
+void Polynomial::checkSameRing(const Polynomial& other, const char* operation) const {
   if (!(*ring_ == *other.ring_)) {
     throw std::invalid_argument(std::string(operation) + " of polynomials from different rings");
   }
@@ -156,19 +156,19 @@ Polynomial Polynomial::operator-() const {
 }
 
 Polynomial& Polynomial::operator+=(const Polynomial& other) {
-  check_same_ring(other, "sum");
-  terms_ = merge_terms(*ring_, std::move(terms_), other.terms_, +1);
+  checkSameRing(other, "sum");
+  terms_ = mergeTerms(*ring_, std::move(terms_), other.terms_, +1);
   return *this;
 }
 
 Polynomial& Polynomial::operator-=(const Polynomial& other) {
-  check_same_ring(other, "difference");
-  terms_ = merge_terms(*ring_, std::move(terms_), other.terms_, -1);
+  checkSameRing(other, "difference");
+  terms_ = mergeTerms(*ring_, std::move(terms_), other.terms_, -1);
   return *this;
 }
 
 Polynomial& Polynomial::operator*=(const Polynomial& other) {
-  check_same_ring(other, "product");
+  checkSameRing(other, "product");
   // One sorted partial product per term of the shorter factor (monomial
   // orders respect multiplication), merged like a binary counter: a part of
   // level k holds 2^k partial products, and two parts of one level merge at
@@ -187,7 +187,7 @@ Polynomial& Polynomial::operator*=(const Polynomial& other) {
     }
     int level = 0;
     while (!parts.empty() && parts.back().second == level) {
-      part = merge_terms(*ring_, std::move(parts.back().first), part, +1);
+      part = mergeTerms(*ring_, std::move(parts.back().first), part, +1);
       parts.pop_back();
       ++level;
     }
@@ -196,7 +196,7 @@ Polynomial& Polynomial::operator*=(const Polynomial& other) {
   while (parts.size() > 1) {
     std::vector<Term> last = std::move(parts.back().first);
     parts.pop_back();
-    parts.back().first = merge_terms(*ring_, std::move(parts.back().first), last, +1);
+    parts.back().first = mergeTerms(*ring_, std::move(parts.back().first), last, +1);
   }
   terms_ = parts.empty() ? std::vector<Term>{} : std::move(parts.front().first);
   return *this;
@@ -235,11 +235,11 @@ Polynomial operator*(Polynomial a, const Rational& b) { return a *= b; }
 Polynomial operator*(const Rational& a, Polynomial b) { return b *= a; }
 Polynomial operator/(Polynomial a, const Rational& b) { return a /= b; }
 
-Polynomial multiply_by_term(const Polynomial& a, const Rational& coefficient,
+Polynomial multiplyByTerm(const Polynomial& a, const Rational& coefficient,
                             const Monomial& monomial) {
   if (sgn(coefficient) == 0) return a.ring()->zero();
   std::vector<Term> terms;
-  terms.reserve(a.term_count());
+  terms.reserve(a.termCount());
   for (const Term& t : a.terms()) terms.push_back(Term{t.monomial * monomial, t.coefficient * coefficient});
   return Polynomial(a.ring(), std::move(terms));
 }

@@ -5,7 +5,7 @@
 // coefficients, no repeated monomials. Two polynomials are equal iff their
 // term lists are equal. Arithmetic between polynomials requires equal rings
 // (Ring's operator==) and throws std::invalid_argument otherwise; move a
-// polynomial to another ring with in_ring.
+// polynomial to another ring with inRing.
 //
 // There is no operator^ for powers: C++ gives ^ a lower precedence than + and
 // -, so "x^2 + 1" would silently mean x^(2+1). Use pow(x, 2).
@@ -37,24 +37,24 @@ class Polynomial {
 
   const RingPtr& ring() const { return ring_; }
   const std::vector<Term>& terms() const { return terms_; }
-  std::size_t term_count() const { return terms_.size(); }
-  bool is_zero() const { return terms_.empty(); }
+  std::size_t termCount() const { return terms_.size(); }
+  bool isZero() const { return terms_.empty(); }
   /// Zero or a nonzero constant.
-  bool is_constant() const;
+  bool isConstant() const;
 
   // Leading data under the ring's order; all require a nonzero polynomial
   // (std::logic_error otherwise).
-  const Term& leading_term() const;
-  const Monomial& leading_monomial() const { return leading_term().monomial; }
-  const Rational& leading_coefficient() const { return leading_term().coefficient; }
-  const std::vector<Exponent>& leading_exponent() const { return leading_monomial().exponents(); }
+  const Term& leadingTerm() const;
+  const Monomial& leadingMonomial() const { return leadingTerm().monomial; }
+  const Rational& leadingCoefficient() const { return leadingTerm().coefficient; }
+  const std::vector<Exponent>& leadingExponent() const { return leadingMonomial().exponents(); }
 
   /// Total degree (0 for the zero polynomial).
-  std::uint64_t total_degree() const;
+  std::uint64_t totalDegree() const;
   /// Largest exponent of `variable` in any term.
-  Exponent degree_in(std::size_t variable) const;
+  Exponent degreeIn(std::size_t variable) const;
   /// True if `variable` occurs in some term.
-  bool contains_variable(std::size_t variable) const;
+  bool containsVariable(std::size_t variable) const;
 
   /// Divided by its leading coefficient (zero stays zero).
   Polynomial monic() const;
@@ -65,10 +65,10 @@ class Polynomial {
   /// The same polynomial in another ring, variables matched by name; terms
   /// are re-sorted by the target's order. Throws std::invalid_argument naming
   /// the variable when one that occurs here is missing from `target`.
-  Polynomial in_ring(const RingPtr& target) const;
+  Polynomial inRing(const RingPtr& target) const;
 
   /// Printed so that it reads back: "x^2 - 3/2*x*y + 1", "0".
-  std::string to_string() const;
+  std::string toString() const;
 
   Polynomial operator-() const;
   Polynomial& operator+=(const Polynomial& other);
@@ -81,7 +81,7 @@ class Polynomial {
   friend bool operator==(const Polynomial& a, const Polynomial& b);
 
  private:
-  void check_same_ring(const Polynomial& other, const char* operation) const;
+  void checkSameRing(const Polynomial& other, const char* operation) const;
 
   RingPtr ring_;
   std::vector<Term> terms_;
@@ -117,7 +117,7 @@ template <std::floating_point F> Polynomial operator*(F, Polynomial) = delete;
 template <std::floating_point F> Polynomial operator/(Polynomial, F) = delete;
 
 /// a * coefficient * monomial.
-Polynomial multiply_by_term(const Polynomial& a, const Rational& coefficient, const Monomial& monomial);
+Polynomial multiplyByTerm(const Polynomial& a, const Rational& coefficient, const Monomial& monomial);
 /// base^exponent, with base^0 = 1 (also for base 0).
 Polynomial pow(const Polynomial& base, unsigned exponent);
 

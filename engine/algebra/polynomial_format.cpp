@@ -7,7 +7,7 @@ namespace sdfwb::algebra {
 namespace {
 
 // "x^2*y"; empty for the monomial 1.
-std::string format_monomial(const Ring& ring, const Monomial& m) {
+std::string formatMonomial(const Ring& ring, const Monomial& m) {
   std::string text;
   for (std::size_t i = 0; i < m.size(); ++i) {
     if (m[i] == 0) continue;
@@ -20,7 +20,7 @@ std::string format_monomial(const Ring& ring, const Monomial& m) {
 
 }  // namespace
 
-std::string Polynomial::to_string() const {
+std::string Polynomial::toString() const {
   if (terms_.empty()) return "0";
   std::string text;
   for (const Term& t : terms_) {
@@ -31,18 +31,18 @@ std::string Polynomial::to_string() const {
       text += negative ? " - " : " + ";
     }
     Rational magnitude = abs(t.coefficient);
-    std::string monomial = format_monomial(*ring_, t.monomial);
+    std::string monomial = formatMonomial(*ring_, t.monomial);
     if (monomial.empty()) {
-      text += algebra::to_string(magnitude);
+      text += algebra::toString(magnitude);
     } else if (magnitude == 1) {
       text += monomial;
     } else {
-      text += algebra::to_string(magnitude) + '*' + monomial;
+      text += algebra::toString(magnitude) + '*' + monomial;
     }
   }
   return text;
 }
 
-std::ostream& operator<<(std::ostream& out, const Polynomial& p) { return out << p.to_string(); }
+std::ostream& operator<<(std::ostream& out, const Polynomial& p) { return out << p.toString(); }
 
 }  // namespace sdfwb::algebra

@@ -2,7 +2,7 @@
 
 namespace sdfwb::algebra {
 
-std::string to_string(const Rational& value) {
+std::string toString(const Rational& value) {
   // mpq_class keeps its value canonical, so get_str already omits "/1".
   return value.get_str();
 }

@@ -13,6 +13,6 @@ using Integer = mpz_class;
 
 /// "a/b" with b > 1 omitted when the value is an integer ("-3", "3/2").
 /// The text reads back as the same value.
-std::string to_string(const Rational& value);
+std::string toString(const Rational& value);
 
 }  // namespace sdfwb::algebra

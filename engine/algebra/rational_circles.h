@@ -16,6 +16,6 @@ namespace sdfwb::algebra {
 /// constant times c^2 + s^2 - 1 replaced by one new parameter t as above
 /// (named so it collides with no parameter or coordinate), that relation
 /// dropped and the others rewritten; nullopt when no relation has that shape.
-std::optional<RationalParametrization> rational_circles(const RationalParametrization& p);
+std::optional<RationalParametrization> rationalCircles(const RationalParametrization& p);
 
 }  // namespace sdfwb::algebra

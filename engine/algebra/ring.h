@@ -32,14 +32,14 @@ class Ring : public std::enable_shared_from_this<Ring> {
   /// Throws std::invalid_argument when a name is empty or repeated, or when
   /// the order does not fit the variable count (weights, block sizes).
   /// Names are free-form here; names that users cannot type are reserved for
-  /// internal variables (see internal_variable_name).
+  /// internal variables (see internalVariableName).
   static RingPtr make(std::vector<std::string> variables,
                       MonomialOrder order = MonomialOrder::degrevlex());
 
   std::size_t size() const { return variables_.size(); }
   const std::vector<std::string>& variables() const { return variables_; }
   const std::string& variable(std::size_t index) const { return variables_[index]; }
-  std::optional<std::size_t> index_of(std::string_view name) const;
+  std::optional<std::size_t> indexOf(std::string_view name) const;
   const MonomialOrder& order() const { return order_; }
 
   /// Sign of the comparison of two monomials of this ring under its order:
@@ -47,7 +47,7 @@ class Ring : public std::enable_shared_from_this<Ring> {
   int compare(const Monomial& a, const Monomial& b) const;
 
   /// The same variables with another order.
-  RingPtr with_order(MonomialOrder order) const;
+  RingPtr withOrder(MonomialOrder order) const;
 
   // Building polynomials. var(name) throws std::invalid_argument for an
   // unknown name ("unknown variable 'w'").
@@ -56,7 +56,7 @@ class Ring : public std::enable_shared_from_this<Ring> {
   Polynomial constant(const Rational& value) const;
   Polynomial zero() const;
   Polynomial one() const;
-  Monomial one_monomial() const { return Monomial(size()); }
+  Monomial oneMonomial() const { return Monomial(size()); }
 
   /// Same variable names and same order.
   friend bool operator==(const Ring& a, const Ring& b);
@@ -71,12 +71,12 @@ class Ring : public std::enable_shared_from_this<Ring> {
 };
 
 /// True for the names a user can type: [A-Za-z_][A-Za-z0-9_]*.
-bool is_user_identifier(std::string_view name);
+bool isUserIdentifier(std::string_view name);
 
 /// A variable name for internal use (half-angle parameters, the auxiliary y
 /// of Theorem 1.8, tags of ideal intersection) that can never collide with a
 /// user identifier: "$" + hint, with a number appended if needed to differ
 /// from every name in `taken`.
-std::string internal_variable_name(std::string_view hint, const std::vector<std::string>& taken);
+std::string internalVariableName(std::string_view hint, const std::vector<std::string>& taken);
 
 }  // namespace sdfwb::algebra

@@ -32,10 +32,10 @@ std::uint64_t coefficientLimbs(const Polynomial& p) {
 }  // namespace
 
 Polynomial FractionArithmetic::product(const Polynomial& a, const Polynomial& b) const {
-  checkDegree(a.total_degree() + b.total_degree());
+  checkDegree(a.totalDegree() + b.totalDegree());
   // A term product costs a monomial sum and a rational product: count both,
   // the latter by limb products (large binomial coefficients dominate (x+1)^n).
-  work_ += static_cast<std::uint64_t>(a.term_count()) * b.term_count() +
+  work_ += static_cast<std::uint64_t>(a.termCount()) * b.termCount() +
            coefficientLimbs(a) * coefficientLimbs(b) / 16;
   if (work_ > kMaxExpansionWork) {
     throw TooLargeToExpand("the formula is too large to expand exactly (more than " +
@@ -47,7 +47,7 @@ Polynomial FractionArithmetic::product(const Polynomial& a, const Polynomial& b)
 // Factor powers multiply one factor at a time, so that each product is checked.
 Polynomial FractionArithmetic::withFactors(Polynomial n, const std::vector<unsigned>& powers) const {
   for (std::size_t i = 0; i < powers.size(); ++i) {
-    checkDegree(n.total_degree() + std::uint64_t(powers[i]) * factors_[i].total_degree());
+    checkDegree(n.totalDegree() + std::uint64_t(powers[i]) * factors_[i].totalDegree());
     for (unsigned k = 0; k < powers[i]; ++k) n = product(n, factors_[i]);
   }
   return n;
@@ -59,8 +59,8 @@ Fraction FractionArithmetic::negate(Fraction a) const {
 }
 
 Fraction FractionArithmetic::add(const Fraction& a, const Fraction& b) const {
-  if (a.numerator.is_zero()) return b;
-  if (b.numerator.is_zero()) return a;
+  if (a.numerator.isZero()) return b;
+  if (b.numerator.isZero()) return a;
   std::vector<unsigned> common(std::max(a.powers.size(), b.powers.size()), 0);
   std::vector<unsigned> missingA(common.size()), missingB(common.size());
   for (std::size_t i = 0; i < common.size(); ++i) {
@@ -72,7 +72,7 @@ Fraction FractionArithmetic::add(const Fraction& a, const Fraction& b) const {
 }
 
 Fraction FractionArithmetic::multiply(const Fraction& a, const Fraction& b) const {
-  if (a.numerator.is_zero() || b.numerator.is_zero()) return constant(0);
+  if (a.numerator.isZero() || b.numerator.isZero()) return constant(0);
   std::vector<unsigned> powers(std::max(a.powers.size(), b.powers.size()), 0);
   for (std::size_t i = 0; i < powers.size(); ++i) {
     checkDegree(std::uint64_t(at(a.powers, i)) + at(b.powers, i));
@@ -83,17 +83,17 @@ Fraction FractionArithmetic::multiply(const Fraction& a, const Fraction& b) cons
 
 std::pair<Rational, std::vector<unsigned>> FractionArithmetic::factorize(Polynomial p) {
   std::vector<unsigned> powers(factors_.size(), 0);
-  for (std::size_t i = 0; i < factors_.size() && !p.is_constant(); ++i) {
-    while (!p.is_constant()) {
-      auto q = algebra::divide_exact(p, factors_[i]);
+  for (std::size_t i = 0; i < factors_.size() && !p.isConstant(); ++i) {
+    while (!p.isConstant()) {
+      auto q = algebra::divideExact(p, factors_[i]);
       if (!q) break;
       p = std::move(*q);
       ++powers[i];
     }
   }
-  if (p.is_constant()) return {p.leading_coefficient(), powers};
+  if (p.isConstant()) return {p.leadingCoefficient(), powers};
   Polynomial factor = p.primitive();
-  const Rational scale = p.leading_coefficient() / factor.leading_coefficient();
+  const Rational scale = p.leadingCoefficient() / factor.leadingCoefficient();
   factors_.push_back(std::move(factor));
   powers.push_back(1);
   return {scale, powers};
@@ -106,16 +106,16 @@ Fraction FractionArithmetic::quotient(const Polynomial& numerator, const Polynom
 
 std::optional<Fraction> FractionArithmetic::divide(const Fraction& a, const Fraction& b) {
   auto [bNumerator, bDenominator] = reduce(b);
-  if (bNumerator.is_zero()) return std::nullopt;
+  if (bNumerator.isZero()) return std::nullopt;
   Fraction inverse = quotient(std::move(bDenominator), bNumerator);
   return multiply(a, inverse);
 }
 
 std::pair<Polynomial, Polynomial> FractionArithmetic::reduce(Fraction a) const {
-  if (a.numerator.is_zero()) return {a.numerator, ring_->one()};
+  if (a.numerator.isZero()) return {a.numerator, ring_->one()};
   for (std::size_t i = 0; i < a.powers.size(); ++i) {
     while (a.powers[i] > 0) {
-      auto q = algebra::divide_exact(a.numerator, factors_[i]);
+      auto q = algebra::divideExact(a.numerator, factors_[i]);
       if (!q) break;
       a.numerator = std::move(*q);
       --a.powers[i];

@@ -44,7 +44,7 @@ Fraction GraphToFractions::convert(NodeId root, SourceLocation rootWhere) {
         const Fraction& divisor = operand(id, n.args[1]);
         auto q = arithmetic_.divide(operand(id, n.args[0]), divisor);
         if (!q) throw Error(graph_.origin(id).where, "division by an expression that is identically 0");
-        if (!firstNonConstantDivision_ && !divisor.numerator.is_constant()) {
+        if (!firstNonConstantDivision_ && !divisor.numerator.isConstant()) {
           firstNonConstantDivision_ = graph_.origin(id);
         }
         values[id] = std::move(*q);

@@ -14,7 +14,7 @@ namespace sdfwb::expr {
 // formula over space `p`, `x`, `y`, `z` are the point and its coordinates; in a
 // parametrization every identifier other than x, y, z is a parameter.
 // Internal variables (half-angle parameters, ...) are named by
-// algebra::internal_variable_name, with a leading '$' no identifier has.
+// algebra::internalVariableName, with a leading '$' no identifier has.
 bool isIdentifier(std::string_view name);
 
 // Why `name` is not an identifier, as a phrase for an error message

@@ -11,7 +11,7 @@ namespace {
 GraphToFractions::Options byName(const Graph& graph, const algebra::RingPtr& ring) {
   GraphToFractions::Options options;
   for (const std::string& name : graph.variables()) {
-    const auto index = ring->index_of(name);
+    const auto index = ring->indexOf(name);
     options.variables.push_back(index ? std::optional(ring->var(*index)) : std::nullopt);
   }
   options.unmappedVariable = [](const std::string& name) -> std::string {
@@ -33,12 +33,12 @@ algebra::Polynomial toPolynomial(const Graph& graph, NodeId node, const algebra:
   FractionArithmetic arithmetic(ring);
   GraphToFractions converter(graph, arithmetic, byName(graph, ring));
   auto [numerator, denominator] = arithmetic.reduce(converter.convert(node, graph.origin(node).where));
-  if (!denominator.is_constant()) {
+  if (!denominator.isConstant()) {
     const auto& division = converter.firstNonConstantDivision();
     throw Error(division ? division->where : graph.origin(node).where,
                 "division by a non-constant expression: the formula is not a polynomial");
   }
-  return numerator / denominator.leading_coefficient();
+  return numerator / denominator.leadingCoefficient();
 }
 
 std::vector<algebra::Polynomial> parsePolynomials(std::string_view source, const algebra::RingPtr& ring) {

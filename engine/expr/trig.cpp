@@ -151,7 +151,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
         strategy == TrigStrategy::HalfAngle ? std::vector<std::string>{"t_" + name}
                                             : std::vector<std::string>{"c_" + name, "s_" + name};
     for (const std::string& hint : hints) {
-      replacements[v].push_back(algebra::internal_variable_name(hint, taken));
+      replacements[v].push_back(algebra::internalVariableName(hint, taken));
       taken.push_back(replacements[v].back());
       result.parameters.push_back(replacements[v].back());
     }

@@ -10,7 +10,7 @@
 // addition formulas (the same product). Then each psi is replaced by:
 //   HalfAngle:      cos psi = (1 - t^2)/(1 + t^2), sin psi = 2t/(1 + t^2), one new parameter t;
 //   CosSinRelation: two new parameters c = cos psi, s = sin psi and the relation c^2 + s^2 - 1.
-// New parameters get internal names (algebra::internal_variable_name) that no
+// New parameters get internal names (algebra::internalVariableName) that no
 // user identifier can equal. A parameter used inside sin/cos/tan must not
 // appear outside them: the result would not be algebraic.
 

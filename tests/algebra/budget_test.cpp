@@ -5,7 +5,7 @@
 // No assertion depends on a clock: a zero time limit is exceeded at the
 // first safe point, memory is counted (deterministic in one thread), and a
 // cancel is triggered from the progress callback after a counted number of
-// reports (progress_interval_seconds = 0 reports at every safe point).
+// reports (progressIntervalSeconds = 0 reports at every safe point).
 
 #include "algebra/groebner.h"
 #include "algebra/ideal_operations.h"
@@ -20,46 +20,46 @@ namespace sdfwb::algebra {
 namespace {
 
 // Far too big to finish before any of the budgets below runs out.
-Ideal hard_system() { return testing::cyclic(8); }
+Ideal hardSystem() { return testing::cyclic(8); }
 
-bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
+bool startsWith(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // A budget whose token is cancelled at the `n`th progress report in `stage`
 // (any stage when empty).
-Budget cancel_at_report(std::size_t n, std::string stage = {}) {
+Budget cancelAtReport(std::size_t n, std::string stage = {}) {
   auto token = std::make_shared<CancelToken>();
   auto seen = std::make_shared<std::size_t>(0);
   Budget budget;
   budget.cancel = token;
-  budget.progress_interval_seconds = 0;
-  budget.on_progress = [token, seen, n, stage](const Progress& p) {
+  budget.progressIntervalSeconds = 0;
+  budget.onProgress = [token, seen, n, stage](const Progress& p) {
     if ((stage.empty() || stage == p.stage) && ++*seen == n) token->cancel();
   };
   return budget;
 }
 
-RationalParametrization biquadratic() { return testing::bezier_patch(2, 2, true, 7); }
+RationalParametrization biquadratic() { return testing::bezierPatch(2, 2, true, 7); }
 
 TEST(Budget, ZeroTimeLimitStopsAtTheFirstSafePoint) {
-  for (GroebnerMethod method : {GroebnerMethod::modular, GroebnerMethod::rational}) {
+  for (GroebnerMethod method : {GroebnerMethod::Modular, GroebnerMethod::Rational}) {
     GroebnerOptions options;
     options.method = method;
-    options.budget.time_limit_seconds = 0;
-    GroebnerResult r = groebner_basis(hard_system(), options);
-    EXPECT_EQ(r.status, Status::time_limit);
+    options.budget.timeLimitSeconds = 0;
+    GroebnerResult r = groebnerBasis(hardSystem(), options);
+    EXPECT_EQ(r.status, Status::TimeLimit);
     EXPECT_FALSE(r.ok());
     EXPECT_TRUE(r.basis.empty());
-    EXPECT_TRUE(starts_with(r.message, "gave up after ")) << r.message;
+    EXPECT_TRUE(startsWith(r.message, "gave up after ")) << r.message;
     EXPECT_TRUE(has(r.message, "time limit")) << r.message;
   }
 }
 
 TEST(Budget, MemoryLimit) {
   GroebnerOptions options;
-  options.budget.memory_limit_bytes = 256 * 1024;
-  GroebnerResult r = groebner_basis(hard_system(), options);
-  EXPECT_EQ(r.status, Status::memory_limit) << r.message;
+  options.budget.memoryLimitBytes = 256 * 1024;
+  GroebnerResult r = groebnerBasis(hardSystem(), options);
+  EXPECT_EQ(r.status, Status::MemoryLimit) << r.message;
   EXPECT_TRUE(has(r.message, "memory limit")) << r.message;
 }
 
@@ -68,16 +68,16 @@ TEST(Budget, CancelledBeforeStart) {
   token->cancel();
   GroebnerOptions options;
   options.budget.cancel = token;
-  GroebnerResult r = groebner_basis(testing::katsura(3), options);
-  EXPECT_EQ(r.status, Status::cancelled);
-  EXPECT_TRUE(starts_with(r.message, "cancelled after ")) << r.message;
+  GroebnerResult r = groebnerBasis(testing::katsura(3), options);
+  EXPECT_EQ(r.status, Status::Cancelled);
+  EXPECT_TRUE(startsWith(r.message, "cancelled after ")) << r.message;
 }
 
 TEST(Budget, CancelledDuringBuchberger) {
   GroebnerOptions options;
-  options.budget = cancel_at_report(50);
-  GroebnerResult r = groebner_basis(hard_system(), options);
-  EXPECT_EQ(r.status, Status::cancelled) << r.message;
+  options.budget = cancelAtReport(50);
+  GroebnerResult r = groebnerBasis(hardSystem(), options);
+  EXPECT_EQ(r.status, Status::Cancelled) << r.message;
   EXPECT_TRUE(r.basis.empty());
   EXPECT_TRUE(has(r.message, "pairs left")) << r.message;
 }
@@ -91,20 +91,20 @@ TEST(Budget, ImplicitizationStopsInEveryStage) {
   for (const auto& [stage, where] : stages) {
     SCOPED_TRACE(stage);
     ImplicitizationOptions options;
-    options.groebner.budget = cancel_at_report(1, stage);
+    options.groebner.budget = cancelAtReport(1, stage);
     ImplicitizationResult r = implicitize(biquadratic(), options);
-    EXPECT_EQ(r.status, Status::cancelled) << r.message;
+    EXPECT_EQ(r.status, Status::Cancelled) << r.message;
     EXPECT_TRUE(r.generators.empty());
-    EXPECT_TRUE(starts_with(r.message, "cancelled after ")) << r.message;
+    EXPECT_TRUE(startsWith(r.message, "cancelled after ")) << r.message;
     EXPECT_TRUE(has(r.message, where)) << r.message;
   }
   // Elimination, for a parametrization with relations.
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     if (example.name != "dupin-cyclide/cs") continue;
     ImplicitizationOptions options;
-    options.groebner.budget = cancel_at_report(2, "buchberger");
+    options.groebner.budget = cancelAtReport(2, "buchberger");
     ImplicitizationResult r = implicitize(example.parametrization, options);
-    EXPECT_EQ(r.status, Status::cancelled) << r.message;
+    EXPECT_EQ(r.status, Status::Cancelled) << r.message;
     EXPECT_TRUE(has(r.message, "buchberger")) << r.message;
   }
 }
@@ -113,57 +113,57 @@ TEST(Budget, InterpolationMemoryLimit) {
   ImplicitizationOptions options;
   // Degree 8 needs 165 unknowns; the degree search passes 64 KB of counted
   // matrices at degree 6.
-  options.groebner.budget.memory_limit_bytes = 64 * 1024;
+  options.groebner.budget.memoryLimitBytes = 64 * 1024;
   ImplicitizationResult r = implicitize(biquadratic(), options);
-  EXPECT_EQ(r.status, Status::memory_limit) << r.message;
-  EXPECT_TRUE(starts_with(r.message, "gave up after ")) << r.message;
+  EXPECT_EQ(r.status, Status::MemoryLimit) << r.message;
+  EXPECT_TRUE(startsWith(r.message, "gave up after ")) << r.message;
   EXPECT_TRUE(has(r.message, "memory limit")) << r.message;
   EXPECT_TRUE(has(r.message, "(interpolation")) << r.message;
 }
 
 TEST(Budget, ZeroTimeLimitInImplicitizationAndIdealOperations) {
   ImplicitizationOptions options;
-  options.groebner.budget.time_limit_seconds = 0;
+  options.groebner.budget.timeLimitSeconds = 0;
   ImplicitizationResult r = implicitize(biquadratic(), options);
-  EXPECT_EQ(r.status, Status::time_limit);
+  EXPECT_EQ(r.status, Status::TimeLimit);
   EXPECT_TRUE(r.generators.empty());
-  EXPECT_TRUE(starts_with(r.message, "gave up after ")) << r.message;
+  EXPECT_TRUE(startsWith(r.message, "gave up after ")) << r.message;
   GroebnerOptions quick;
-  quick.budget.time_limit_seconds = 0;
-  Decision d = contains(hard_system(), hard_system().ring()->one(), quick);
-  EXPECT_EQ(d.status, Status::time_limit);
+  quick.budget.timeLimitSeconds = 0;
+  Decision d = contains(hardSystem(), hardSystem().ring()->one(), quick);
+  EXPECT_EQ(d.status, Status::TimeLimit);
   EXPECT_FALSE(d.ok());
 }
 
 TEST(Budget, ProgressReportsBasisAndPairs) {
-  std::size_t reports = 0, largest_basis = 0, most_pairs = 0;
+  std::size_t reports = 0, largestBasis = 0, mostPairs = 0;
   GroebnerOptions options;
-  options.budget.progress_interval_seconds = 0;
-  options.budget.on_progress = [&](const Progress& p) {
+  options.budget.progressIntervalSeconds = 0;
+  options.budget.onProgress = [&](const Progress& p) {
     ++reports;
-    largest_basis = std::max(largest_basis, p.basis_size);
-    most_pairs = std::max(most_pairs, p.pairs_left);
+    largestBasis = std::max(largestBasis, p.basisSize);
+    mostPairs = std::max(mostPairs, p.pairsLeft);
   };
-  GroebnerResult r = groebner_basis(testing::katsura(4), options);
+  GroebnerResult r = groebnerBasis(testing::katsura(4), options);
   ASSERT_TRUE(r.ok());
   EXPECT_GT(reports, 0u);
-  EXPECT_GT(largest_basis, 0u);
-  EXPECT_GT(most_pairs, 0u);
+  EXPECT_GT(largestBasis, 0u);
+  EXPECT_GT(mostPairs, 0u);
 }
 
 TEST(Budget, ProgressReportsTheImplicitizationStagesAndPrimes) {
   std::set<std::string> stages;
-  std::size_t most_primes = 0;
+  std::size_t mostPrimes = 0;
   ImplicitizationOptions options;
-  options.groebner.budget.progress_interval_seconds = 0;
-  options.groebner.budget.on_progress = [&](const Progress& p) {
+  options.groebner.budget.progressIntervalSeconds = 0;
+  options.groebner.budget.onProgress = [&](const Progress& p) {
     stages.insert(p.stage);
-    most_primes = std::max(most_primes, p.primes);
+    mostPrimes = std::max(mostPrimes, p.primes);
   };
   ImplicitizationResult r = implicitize(biquadratic(), options);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(stages, (std::set<std::string>{"substitution", "interpolation", "verification"}));
-  EXPECT_GT(most_primes, 0u);
+  EXPECT_GT(mostPrimes, 0u);
 }
 
 }  // namespace

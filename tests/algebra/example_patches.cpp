@@ -18,7 +18,7 @@ class Coefficients {
   std::mt19937 random_;
 };
 
-RingPtr uv_ring() { return Ring::make({"u", "v"}); }
+RingPtr uvRing() { return Ring::make({"u", "v"}); }
 
 // Bernstein basis polynomial B_i^n(t) = C(n, i) t^i (1 - t)^(n - i).
 Polynomial bernstein(unsigned n, unsigned i, const Polynomial& t) {
@@ -28,8 +28,8 @@ Polynomial bernstein(unsigned n, unsigned i, const Polynomial& t) {
 }
 
 // A polynomial of bidegree (m, n) in u, v with coefficients in [low, high].
-Polynomial random_bidegree(unsigned m, unsigned n, Coefficients& c, long low, long high) {
-  RingPtr ring = uv_ring();
+Polynomial randomBidegree(unsigned m, unsigned n, Coefficients& c, long low, long high) {
+  RingPtr ring = uvRing();
   Polynomial f = ring->zero();
   for (unsigned i = 0; i <= m; ++i) {
     for (unsigned j = 0; j <= n; ++j) f += c.next(low, high) * pow(ring->var("u"), i) * pow(ring->var("v"), j);
@@ -37,20 +37,20 @@ Polynomial random_bidegree(unsigned m, unsigned n, Coefficients& c, long low, lo
   return f;
 }
 
-NamedParametrization height_patch(unsigned m, unsigned n, unsigned seed) {
+NamedParametrization heightPatch(unsigned m, unsigned n, unsigned seed) {
   Coefficients c(seed);
-  RingPtr ring = uv_ring();
+  RingPtr ring = uvRing();
   Polynomial one = ring->one();
-  Polynomial p = random_bidegree(m, n, c, -9, 9);
-  Polynomial q = random_bidegree(m, n, c, 1, 9);  // positive coefficients: no pole on u, v >= 0
+  Polynomial p = randomBidegree(m, n, c, -9, 9);
+  Polynomial q = randomBidegree(m, n, c, 1, 9);  // positive coefficients: no pole on u, v >= 0
   return {"height-patch/rational-" + std::to_string(m) + "x" + std::to_string(n),
           {{"u", "v"}, {"x", "y", "z"}, {ring->var("u"), ring->var("v"), p}, {one, one, q}, {}}};
 }
 
 // x, y, z of total degree 2 in u, v with 9-digit coefficients (degree 4).
-NamedParametrization big_coefficient_quadratic() {
+NamedParametrization bigCoefficientQuadratic() {
   Coefficients c(9);
-  RingPtr ring = uv_ring();
+  RingPtr ring = uvRing();
   Polynomial u = ring->var("u"), v = ring->var("v");
   const std::vector<Polynomial> monomials{ring->one(), u, v, u * u, u * v, v * v};
   std::vector<Polynomial> xyz;
@@ -63,9 +63,9 @@ NamedParametrization big_coefficient_quadratic() {
 }
 
 // A rational quadratic (Steiner) patch: x, y, z, w of total degree 2.
-NamedParametrization rational_steiner() {
+NamedParametrization rationalSteiner() {
   Coefficients c(7);
-  RingPtr ring = uv_ring();
+  RingPtr ring = uvRing();
   Polynomial u = ring->var("u"), v = ring->var("v");
   const std::vector<Polynomial> monomials{ring->one(), u, v, u * u, u * v, v * v};
   std::vector<Polynomial> f;
@@ -77,7 +77,7 @@ NamedParametrization rational_steiner() {
   return {"rational-patch/steiner", {{"u", "v"}, {"x", "y", "z"}, {f[0], f[1], f[2]}, {f[3], f[3], f[3]}, {}}};
 }
 
-std::string bezier_name(unsigned m, unsigned n, bool rational) {
+std::string bezierName(unsigned m, unsigned n, bool rational) {
   const char* shape = m == 1 && n == 1 ? "bilinear" : m == 2 && n == 2 ? "biquadratic" : m == 3 && n == 3 ? "bicubic" : "";
   std::string name = *shape ? shape : std::to_string(m) + "x" + std::to_string(n);
   return std::string(rational ? "rational-bezier/" : "bezier/") + name;
@@ -85,9 +85,9 @@ std::string bezier_name(unsigned m, unsigned n, bool rational) {
 
 }  // namespace
 
-RationalParametrization bezier_patch(unsigned m, unsigned n, bool rational, unsigned seed) {
+RationalParametrization bezierPatch(unsigned m, unsigned n, bool rational, unsigned seed) {
   Coefficients c(seed);
-  RingPtr ring = uv_ring();
+  RingPtr ring = uvRing();
   Polynomial u = ring->var("u"), v = ring->var("v");
   std::vector<Polynomial> xyz(3, ring->zero());
   Polynomial w = ring->zero();
@@ -103,20 +103,20 @@ RationalParametrization bezier_patch(unsigned m, unsigned n, bool rational, unsi
   return {{"u", "v"}, {"x", "y", "z"}, xyz, {w, w, w}, {}};
 }
 
-std::vector<NamedParametrization> patch_parametrizations(unsigned max_degree) {
+std::vector<NamedParametrization> patchParametrizations(unsigned maxDegree) {
   std::vector<NamedParametrization> out;
-  out.push_back(height_patch(1, 1, 1));
-  out.push_back(height_patch(2, 2, 2));
-  out.push_back(height_patch(3, 3, 3));
-  out.push_back(big_coefficient_quadratic());
-  out.push_back(rational_steiner());
+  out.push_back(heightPatch(1, 1, 1));
+  out.push_back(heightPatch(2, 2, 2));
+  out.push_back(heightPatch(3, 3, 3));
+  out.push_back(bigCoefficientQuadratic());
+  out.push_back(rationalSteiner());
   for (unsigned d : {1u, 2u, 3u}) {
     for (bool rational : {false, true}) {
-      if (2 * d * d > max_degree) continue;
-      out.push_back({bezier_name(d, d, rational), bezier_patch(d, d, rational, 10 * d + (rational ? 1 : 0))});
+      if (2 * d * d > maxDegree) continue;
+      out.push_back({bezierName(d, d, rational), bezierPatch(d, d, rational, 10 * d + (rational ? 1 : 0))});
     }
   }
-  if (4 <= max_degree) out.push_back({bezier_name(2, 1, true), bezier_patch(2, 1, true, 21)});
+  if (4 <= maxDegree) out.push_back({bezierName(2, 1, true), bezierPatch(2, 1, true, 21)});
   return out;
 }
 

@@ -48,7 +48,7 @@ Ideal cyclic(int n, const MonomialOrder& order) {
   return Ideal(ring, eqs);
 }
 
-std::vector<NamedSystem> small_systems() {
+std::vector<NamedSystem> smallSystems() {
   std::vector<NamedSystem> out;
   for (const MonomialOrder& order : {MonomialOrder::lex(), MonomialOrder::deglex(), MonomialOrder::degrevlex()}) {
     out.push_back({"katsura3 " + order.describe(), katsura(3, order)});
@@ -76,16 +76,16 @@ namespace {
 // cos and sin of one angle, either as variables c, s with c^2 + s^2 = 1 or
 // by the half-angle substitution in t: ((1 - t^2) / (1 + t^2), 2t / (1 + t^2)).
 struct Angle {
-  Polynomial cos_num, sin_num, den;
+  Polynomial cosNum, sinNum, den;
 };
 
 struct TrigBuilder {
-  bool half_angle;
+  bool halfAngle;
   std::vector<std::string> names;  // per angle: {"c", "s"} or {"t"}
   RingPtr ring;
   std::vector<Polynomial> relations;
 
-  TrigBuilder(bool half, const std::vector<std::string>& angles) : half_angle(half) {
+  TrigBuilder(bool half, const std::vector<std::string>& angles) : halfAngle(half) {
     for (const std::string& a : angles) {
       if (half) {
         names.push_back("t" + a);
@@ -95,10 +95,10 @@ struct TrigBuilder {
       }
     }
   }
-  void add_parameter(const std::string& name) { names.push_back(name); }
+  void addParameter(const std::string& name) { names.push_back(name); }
   void finish() {
     ring = Ring::make(names);
-    if (!half_angle) {
+    if (!halfAngle) {
       for (std::size_t i = 0; i + 1 < names.size(); i += 2) {
         if (names[i][0] != 'c') break;
         relations.push_back(pow(ring->var(names[i]), 2) + pow(ring->var(names[i + 1]), 2) - 1);
@@ -106,7 +106,7 @@ struct TrigBuilder {
     }
   }
   Angle angle(const std::string& a) const {
-    if (half_angle) {
+    if (halfAngle) {
       Polynomial t = ring->var("t" + a);
       return {1 - pow(t, 2), 2 * t, 1 + pow(t, 2)};
     }
@@ -119,22 +119,22 @@ NamedParametrization torus(bool half) {
   TrigBuilder b(half, {"u", "v"});
   b.finish();
   Angle u = b.angle("u"), v = b.angle("v");
-  Polynomial ring_radius = 2 * v.den + v.cos_num;  // (2 + cos v) * den_v
+  Polynomial ringRadius = 2 * v.den + v.cosNum;  // (2 + cos v) * den_v
   RationalParametrization p{b.names, {"x", "y", "z"},
-                            {ring_radius * u.cos_num, ring_radius * u.sin_num, v.sin_num},
+                            {ringRadius * u.cosNum, ringRadius * u.sinNum, v.sinNum},
                             {v.den * u.den, v.den * u.den, v.den}, b.relations};
   return {std::string("torus/") + (half ? "half-angle" : "cs"), p};
 }
 
-NamedParametrization cross_cap(bool half) {
+NamedParametrization crossCap(bool half) {
   // x = cos u sin 2v, y = sin u sin 2v, z = cos^2 v - cos^2 u sin^2 v.
   TrigBuilder b(half, {"u", "v"});
   b.finish();
   Angle u = b.angle("u"), v = b.angle("v");
-  Polynomial sin2v = 2 * v.sin_num * v.cos_num;  // / den_v^2
-  Polynomial z_num = pow(v.cos_num, 2) * pow(u.den, 2) - pow(u.cos_num, 2) * pow(v.sin_num, 2);
+  Polynomial sin2v = 2 * v.sinNum * v.cosNum;  // / den_v^2
+  Polynomial zNum = pow(v.cosNum, 2) * pow(u.den, 2) - pow(u.cosNum, 2) * pow(v.sinNum, 2);
   RationalParametrization p{b.names, {"x", "y", "z"},
-                            {u.cos_num * sin2v, u.sin_num * sin2v, z_num},
+                            {u.cosNum * sin2v, u.sinNum * sin2v, zNum},
                             {u.den * pow(v.den, 2), u.den * pow(v.den, 2), pow(u.den, 2) * pow(v.den, 2)},
                             b.relations};
   return {std::string("cross-cap/") + (half ? "half-angle" : "cs"), p};
@@ -144,19 +144,19 @@ NamedParametrization moebius(bool half) {
   // x = (1 + v/2 cos(u/2)) cos u, y = (1 + v/2 cos(u/2)) sin u, z = v/2 sin(u/2),
   // with w = u/2: cos u = cos^2 w - sin^2 w, sin u = 2 sin w cos w.
   TrigBuilder b(half, {"w"});
-  b.add_parameter("v");
+  b.addParameter("v");
   b.finish();
   Angle w = b.angle("w");
   Polynomial v = b.ring->var("v");
-  Polynomial radius = 2 * w.den + v * w.cos_num;  // 2 * den_w * (1 + v/2 cos w)
-  Polynomial cos_u = pow(w.cos_num, 2) - pow(w.sin_num, 2), sin_u = 2 * w.sin_num * w.cos_num;
+  Polynomial radius = 2 * w.den + v * w.cosNum;  // 2 * den_w * (1 + v/2 cos w)
+  Polynomial cosU = pow(w.cosNum, 2) - pow(w.sinNum, 2), sinU = 2 * w.sinNum * w.cosNum;
   RationalParametrization p{b.names, {"x", "y", "z"},
-                            {radius * cos_u, radius * sin_u, v * w.sin_num},
+                            {radius * cosU, radius * sinU, v * w.sinNum},
                             {2 * pow(w.den, 3), 2 * pow(w.den, 3), 2 * w.den}, b.relations};
   return {std::string("moebius/") + (half ? "half-angle" : "cs"), p};
 }
 
-NamedParametrization dupin_cyclide(bool half) {
+NamedParametrization dupinCyclide(bool half) {
   // a = 5, c = 3, b = 4, d = 2:
   // x = (d (c - a cos u cos v) + b^2 cos u) / (a - c cos u cos v)
   // y = b sin u (a - d cos v) / (a - c cos u cos v)
@@ -165,10 +165,10 @@ NamedParametrization dupin_cyclide(bool half) {
   b.finish();
   Angle u = b.angle("u"), v = b.angle("v");
   Polynomial duv = u.den * v.den;
-  Polynomial denominator = 5 * duv - 3 * u.cos_num * v.cos_num;  // (a - c cu cv) * du dv
-  Polynomial x = 2 * (3 * duv - 5 * u.cos_num * v.cos_num) + 16 * u.cos_num * v.den;
-  Polynomial y = 4 * u.sin_num * (5 * v.den - 2 * v.cos_num);
-  Polynomial z = 4 * v.sin_num * (3 * u.cos_num - 2 * u.den);
+  Polynomial denominator = 5 * duv - 3 * u.cosNum * v.cosNum;  // (a - c cu cv) * du dv
+  Polynomial x = 2 * (3 * duv - 5 * u.cosNum * v.cosNum) + 16 * u.cosNum * v.den;
+  Polynomial y = 4 * u.sinNum * (5 * v.den - 2 * v.cosNum);
+  Polynomial z = 4 * v.sinNum * (3 * u.cosNum - 2 * u.den);
   RationalParametrization p{b.names, {"x", "y", "z"}, {x, y, z}, {denominator, denominator, denominator},
                             b.relations};
   return {std::string("dupin-cyclide/") + (half ? "half-angle" : "cs"), p};
@@ -176,7 +176,7 @@ NamedParametrization dupin_cyclide(bool half) {
 
 }  // namespace
 
-std::vector<NamedParametrization> classic_parametrizations() {
+std::vector<NamedParametrization> classicParametrizations() {
   std::vector<NamedParametrization> out;
   auto uv = Ring::make({"u", "v"});
   Polynomial u = uv->var("u"), v = uv->var("v");
@@ -191,16 +191,16 @@ std::vector<NamedParametrization> classic_parametrizations() {
                               3 * pow(u, 2) - 3 * pow(v, 2)}, {}, {}}});
   for (bool half : {false, true}) {
     out.push_back(torus(half));
-    out.push_back(cross_cap(half));
+    out.push_back(crossCap(half));
     out.push_back(moebius(half));
-    out.push_back(dupin_cyclide(half));
+    out.push_back(dupinCyclide(half));
   }
   return out;
 }
 
 std::vector<std::string> strings(const std::vector<Polynomial>& polys) {
   std::vector<std::string> out;
-  for (const Polynomial& p : polys) out.push_back(p.to_string());
+  for (const Polynomial& p : polys) out.push_back(p.toString());
   return out;
 }
 

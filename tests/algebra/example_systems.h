@@ -21,7 +21,7 @@ Ideal katsura(int n, const MonomialOrder& order = MonomialOrder::degrevlex());
 Ideal cyclic(int n, const MonomialOrder& order = MonomialOrder::degrevlex());
 
 /// Small systems with several orders, fast enough for unit tests.
-std::vector<NamedSystem> small_systems();
+std::vector<NamedSystem> smallSystems();
 
 struct NamedParametrization {
   std::string name;
@@ -32,19 +32,19 @@ struct NamedParametrization {
 /// (torus, cross-cap, Moebius strip, Dupin cyclide), the trigonometric ones
 /// both with c = cos, s = sin and c^2 + s^2 = 1 ("/cs") and with the
 /// half-angle substitution ("/half-angle").
-std::vector<NamedParametrization> classic_parametrizations();
+std::vector<NamedParametrization> classicParametrizations();
 
 /// CAD-style patches (example_patches.cpp), with fixed pseudo-random small
 /// integer control points and weights: height patches z = p(u,v)/q(u,v),
 /// Bezier patches of bidegree (m, n) (implicit degree 2mn), polynomial and
 /// rational, a quadratic patch with 9-digit coefficients, a rational
-/// Steiner patch and a bilinear rational patch. `max_degree` leaves out the
+/// Steiner patch and a bilinear rational patch. `maxDegree` leaves out the
 /// patches whose implicit degree exceeds it (the bicubic's is 18).
-std::vector<NamedParametrization> patch_parametrizations(unsigned max_degree = 18);
+std::vector<NamedParametrization> patchParametrizations(unsigned maxDegree = 18);
 
 /// A Bezier patch of bidegree (m, n) whose control points (and weights,
 /// when `rational`) come from `seed`: for random tests.
-RationalParametrization bezier_patch(unsigned m, unsigned n, bool rational, unsigned seed);
+RationalParametrization bezierPatch(unsigned m, unsigned n, bool rational, unsigned seed);
 
 /// The polynomials as the formula language prints them, for comparisons.
 std::vector<std::string> strings(const std::vector<Polynomial>& polys);

@@ -15,27 +15,27 @@ namespace sdfwb::algebra {
 namespace {
 
 TEST(GroebnerProperties, OnSmallSystems) {
-  for (const testing::NamedSystem& system : testing::small_systems()) {
+  for (const testing::NamedSystem& system : testing::smallSystems()) {
     SCOPED_TRACE(system.name);
     GroebnerOptions modular, rational;
-    modular.method = GroebnerMethod::modular;
-    rational.method = GroebnerMethod::rational;
-    const bool try_rational = system.ideal.ring()->order().kind() != MonomialOrder::Kind::lex;
-    GroebnerResult a = groebner_basis(system.ideal, modular);
+    modular.method = GroebnerMethod::Modular;
+    rational.method = GroebnerMethod::Rational;
+    const bool tryRational = system.ideal.ring()->order().kind() != MonomialOrder::Kind::Lex;
+    GroebnerResult a = groebnerBasis(system.ideal, modular);
     ASSERT_TRUE(a.ok());
-    if (try_rational) {
-      EXPECT_EQ(groebner_basis(system.ideal, rational).basis, a.basis);
+    if (tryRational) {
+      EXPECT_EQ(groebnerBasis(system.ideal, rational).basis, a.basis);
     }
-    EXPECT_TRUE(is_reduced_groebner_basis(a.basis));
-    for (const Polynomial& f : system.ideal.generators()) EXPECT_TRUE(normal_form(f, a.basis).is_zero()) << f;
+    EXPECT_TRUE(isReducedGroebnerBasis(a.basis));
+    for (const Polynomial& f : system.ideal.generators()) EXPECT_TRUE(normalForm(f, a.basis).isZero()) << f;
 
     std::vector<Polynomial> shuffled = system.ideal.generators();
     std::reverse(shuffled.begin(), shuffled.end());
     for (std::size_t k = 0; k < shuffled.size(); ++k) shuffled[k] *= Rational(static_cast<long>(k) + 2, 3);
     std::rotate(shuffled.begin(), shuffled.begin() + 1, shuffled.end());
-    EXPECT_EQ(groebner_basis(Ideal(system.ideal.ring(), shuffled), modular).basis, a.basis);
-    if (try_rational) {
-      EXPECT_EQ(groebner_basis(Ideal(system.ideal.ring(), shuffled), rational).basis, a.basis);
+    EXPECT_EQ(groebnerBasis(Ideal(system.ideal.ring(), shuffled), modular).basis, a.basis);
+    if (tryRational) {
+      EXPECT_EQ(groebnerBasis(Ideal(system.ideal.ring(), shuffled), rational).basis, a.basis);
     }
   }
 }
@@ -43,11 +43,11 @@ TEST(GroebnerProperties, OnSmallSystems) {
 TEST(GroebnerProperties, ReducedBasisCheckRejects) {
   auto r = Ring::make({"x", "y"}, MonomialOrder::lex());
   Polynomial x = r->var("x"), y = r->var("y");
-  EXPECT_TRUE(is_reduced_groebner_basis({y - 1, x - 1}));
-  EXPECT_FALSE(is_reduced_groebner_basis({x - 1, y - 1}));          // not sorted
-  EXPECT_FALSE(is_reduced_groebner_basis({y - 1, 2 * x - 1}));      // not monic
-  EXPECT_FALSE(is_reduced_groebner_basis({y - 1, x - y}));          // tail divisible by y
-  EXPECT_FALSE(is_reduced_groebner_basis({pow(y, 2) - 1, x * y - 1}));  // S-pair does not reduce to 0
+  EXPECT_TRUE(isReducedGroebnerBasis({y - 1, x - 1}));
+  EXPECT_FALSE(isReducedGroebnerBasis({x - 1, y - 1}));          // not sorted
+  EXPECT_FALSE(isReducedGroebnerBasis({y - 1, 2 * x - 1}));      // not monic
+  EXPECT_FALSE(isReducedGroebnerBasis({y - 1, x - y}));          // tail divisible by y
+  EXPECT_FALSE(isReducedGroebnerBasis({pow(y, 2) - 1, x * y - 1}));  // S-pair does not reduce to 0
 }
 
 }  // namespace

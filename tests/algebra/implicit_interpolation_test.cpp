@@ -11,9 +11,9 @@
 namespace sdfwb::algebra {
 namespace {
 
-ImplicitizationOptions elimination_only() {
+ImplicitizationOptions eliminationOnly() {
   ImplicitizationOptions options;
-  options.substitute_linear = false;
+  options.substituteLinear = false;
   options.interpolate = false;
   return options;
 }
@@ -23,15 +23,15 @@ TEST(LinearParameters, SolvedAndSubstituted) {
   Polynomial u = uv->var("u"), v = uv->var("v");
   // u = x and v = (x - y)/2 (a constant coefficient); z is then a polynomial.
   RationalParametrization p{{"u", "v"}, {"x", "y", "z"}, {u, u - 2 * v, u * pow(v, 3) - 1}, {}, {}};
-  EliminationProblem reduced = substitute_linear_parameters(implicitization_ideal(p));
+  EliminationProblem reduced = substituteLinearParameters(implicitizationIdeal(p));
   EXPECT_TRUE(reduced.eliminated.empty());
   ASSERT_EQ(reduced.ideal.generators().size(), 1u);
   ImplicitizationResult r = implicitize(p);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.method, "substitution");
   ASSERT_EQ(r.generators.size(), 1u);
-  EXPECT_EQ(r.generators[0].to_string(), "x^4 - 3*x^3*y + 3*x^2*y^2 - x*y^3 - 8*z - 8");
-  EXPECT_TRUE(substitute_parametrization(r.generators[0], p).is_zero());
+  EXPECT_EQ(r.generators[0].toString(), "x^4 - 3*x^3*y + 3*x^2*y^2 - x*y^3 - 8*z - 8");
+  EXPECT_TRUE(substituteParametrization(r.generators[0], p).isZero());
 }
 
 TEST(LinearParameters, NotForANonConstantCoefficient) {
@@ -39,37 +39,37 @@ TEST(LinearParameters, NotForANonConstantCoefficient) {
   Polynomial u = uv->var("u"), v = uv->var("v");
   // u occurs linearly in x = u*v only with the coefficient v: nothing to solve.
   RationalParametrization p{{"u", "v"}, {"x", "y", "z"}, {u * v, pow(v, 2), pow(u, 2)}, {}, {}};
-  EliminationProblem reduced = substitute_linear_parameters(implicitization_ideal(p));
+  EliminationProblem reduced = substituteLinearParameters(implicitizationIdeal(p));
   EXPECT_EQ(reduced.eliminated.size(), 2u);
 }
 
 TEST(LinearParameters, HeightPatchWithDenominator) {
-  for (const testing::NamedParametrization& example : testing::patch_parametrizations()) {
+  for (const testing::NamedParametrization& example : testing::patchParametrizations()) {
     if (example.name.rfind("height-patch/", 0) != 0) continue;
     SCOPED_TRACE(example.name);
     ImplicitizationResult fast = implicitize(example.parametrization);
     ASSERT_TRUE(fast.ok()) << fast.message;
     EXPECT_EQ(fast.method, "substitution");
-    ImplicitizationResult slow = implicitize(example.parametrization, elimination_only());
+    ImplicitizationResult slow = implicitize(example.parametrization, eliminationOnly());
     ASSERT_TRUE(slow.ok()) << slow.message;
     EXPECT_EQ(fast.generators, slow.generators);
   }
 }
 
 TEST(Interpolation, AgreesWithEliminationOnLowDegrees) {
-  std::vector<testing::NamedParametrization> examples = testing::patch_parametrizations(4);
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  std::vector<testing::NamedParametrization> examples = testing::patchParametrizations(4);
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     if (example.parametrization.relations.empty()) examples.push_back(example);
   }
   for (const testing::NamedParametrization& example : examples) {
     SCOPED_TRACE(example.name);
     ImplicitizationOptions options;
-    options.substitute_linear = false;
-    options.elimination_trial = false;
+    options.substituteLinear = false;
+    options.eliminationTrial = false;
     ImplicitizationResult fast = implicitize(example.parametrization, options);
     ASSERT_TRUE(fast.ok()) << fast.message;
     EXPECT_EQ(fast.method, "interpolation");
-    ImplicitizationResult slow = implicitize(example.parametrization, elimination_only());
+    ImplicitizationResult slow = implicitize(example.parametrization, eliminationOnly());
     ASSERT_TRUE(slow.ok()) << slow.message;
     EXPECT_EQ(fast.generators, slow.generators);
   }
@@ -92,14 +92,14 @@ TEST(Interpolation, EliminationTrialChoosesByCost) {
   };
   RationalParametrization dense{
       {"u", "v"}, {"x", "y", "z"}, {cubic(3, 2, 1, 5, 1), cubic(-1, -4, 2, -3, -2), cubic(2, -1, -3, 1, -3)}, {}, {}};
-  ImplicitizationOptions interpolation_only;
-  interpolation_only.elimination_trial = false;
+  ImplicitizationOptions interpolationOnly;
+  interpolationOnly.eliminationTrial = false;
   for (const auto& [p, route] : {std::pair{sparse, "elimination"}, std::pair{dense, "interpolation"}}) {
     ImplicitizationResult chosen = implicitize(p);
     ASSERT_TRUE(chosen.ok()) << chosen.message;
     EXPECT_EQ(chosen.method, route);
     EXPECT_EQ(chosen.degree(), 9u);
-    ImplicitizationResult interpolated = implicitize(p, interpolation_only);
+    ImplicitizationResult interpolated = implicitize(p, interpolationOnly);
     ASSERT_TRUE(interpolated.ok()) << interpolated.message;
     EXPECT_EQ(interpolated.method, "interpolation");
     EXPECT_EQ(chosen.generators, interpolated.generators);
@@ -110,13 +110,13 @@ TEST(Interpolation, EliminationTrialChoosesByCost) {
 // quickly; checked by exact substitution instead.
 TEST(Interpolation, BiquadraticPatches) {
   for (bool rational : {false, true}) {
-    RationalParametrization p = testing::bezier_patch(2, 2, rational, 7);
+    RationalParametrization p = testing::bezierPatch(2, 2, rational, 7);
     ImplicitizationResult r = implicitize(p);
     ASSERT_TRUE(r.ok()) << r.message;
     EXPECT_EQ(r.method, "interpolation");
     ASSERT_EQ(r.generators.size(), 1u);
     EXPECT_EQ(r.degree(), 8u);
-    EXPECT_TRUE(substitute_parametrization(r.generators[0], p).is_zero());
+    EXPECT_TRUE(substituteParametrization(r.generators[0], p).isZero());
   }
 }
 
@@ -128,19 +128,19 @@ TEST(Interpolation, DoesNotApplyToCurvesInSpaceOrRelations) {
   BudgetMonitor monitor(budget);
   RingPtr xyz = Ring::make({"x", "y", "z"});
   RationalParametrization twisted{{"t"}, {"x", "y", "z"}, {x, pow(x, 2), pow(x, 3)}, {}, {}};
-  EXPECT_FALSE(implicitize_by_interpolation(twisted, xyz, monitor, stats));
+  EXPECT_FALSE(implicitizeByInterpolation(twisted, xyz, monitor, stats));
   // A surface that is really a curve: the nullspace never has dimension 1.
   auto uv = Ring::make({"u", "v"});
   Polynomial s = uv->var("u") + uv->var("v");
   RationalParametrization degenerate{{"u", "v"}, {"x", "y", "z"}, {s, pow(s, 2), pow(s, 3)}, {}, {}};
-  EXPECT_FALSE(implicitize_by_interpolation(degenerate, xyz, monitor, stats));
+  EXPECT_FALSE(implicitizeByInterpolation(degenerate, xyz, monitor, stats));
   ImplicitizationResult r = implicitize(degenerate);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.method, "substitution+elimination");  // u = x - v, then Groebner
   EXPECT_EQ(r.generators.size(), 3u);               // the twisted cubic: x^2 - y, x*y - z, y^2 - x*z
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     if (example.parametrization.relations.empty()) continue;
-    EXPECT_FALSE(implicitize_by_interpolation(example.parametrization, xyz, monitor, stats)) << example.name;
+    EXPECT_FALSE(implicitizeByInterpolation(example.parametrization, xyz, monitor, stats)) << example.name;
   }
 }
 
@@ -149,19 +149,19 @@ TEST(Interpolation, PlaneCurves) {
   Polynomial x = t->var("t");
   RationalParametrization cusp{{"t"}, {"x", "y"}, {pow(x, 2), pow(x, 3)}, {}, {}};
   ImplicitizationOptions interpolation;
-  interpolation.elimination_trial = false;
+  interpolation.eliminationTrial = false;
   ImplicitizationResult r = implicitize(cusp, interpolation);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.method, "interpolation");
   ASSERT_EQ(r.generators.size(), 1u);
-  EXPECT_EQ(r.generators[0].to_string(), "x^3 - y^2");
+  EXPECT_EQ(r.generators[0].toString(), "x^3 - y^2");
   // The folium of Descartes, rational: x = 3t/(1+t^3), y = 3t^2/(1+t^3).
   Polynomial d = 1 + pow(x, 3);
   RationalParametrization folium{{"t"}, {"x", "y"}, {3 * x, 3 * pow(x, 2)}, {d, d}, {}};
   r = implicitize(folium);
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_EQ(r.generators.size(), 1u);
-  EXPECT_EQ(r.generators[0].to_string(), "x^3 + y^3 - 3*x*y");
+  EXPECT_EQ(r.generators[0].toString(), "x^3 + y^3 - 3*x*y");
 }
 
 }  // namespace

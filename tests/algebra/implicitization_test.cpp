@@ -20,7 +20,7 @@ ImplicitizationResult checked(const RationalParametrization& p) {
   ImplicitizationResult r = implicitize(p);
   EXPECT_TRUE(r.ok()) << r.message;
   for (const Polynomial& g : r.generators) {
-    EXPECT_TRUE(substitute_parametrization(g, p).is_zero()) << g;
+    EXPECT_TRUE(substituteParametrization(g, p).isZero()) << g;
   }
   return r;
 }
@@ -61,7 +61,7 @@ TEST(Implicitization, UnitSphereByStereographicProjection) {
   EXPECT_EQ(strings(r.generators), (std::vector<std::string>{"x^2 + y^2 + z^2 - 1"}));
   // The product of the denominators gives the same ideal.
   ImplicitizationOptions product;
-  product.denominator = DenominatorStrategy::product;
+  product.denominator = DenominatorStrategy::Product;
   EXPECT_EQ(implicitize(p, product).generators, r.generators);
 }
 
@@ -78,8 +78,8 @@ TEST(Implicitization, EnneperSurface) {
                             {}};
   ImplicitizationResult r = checked(p);
   ASSERT_EQ(r.generators.size(), 1u);
-  EXPECT_EQ(r.generators.front().total_degree(), 9u);
-  EXPECT_GT(r.generators.front().leading_coefficient(), 0);
+  EXPECT_EQ(r.generators.front().totalDegree(), 9u);
+  EXPECT_GT(r.generators.front().leadingCoefficient(), 0);
 }
 
 TEST(Implicitization, CircleWithTrigRelation) {
@@ -101,28 +101,28 @@ TEST(Implicitization, CosSinRelationsBecomeTheCircleParametrization) {
   Polynomial c = ring->var("c"), s = ring->var("s"), r = ring->var("r");
   RationalParametrization p{{"c", "s", "r"}, {"x", "y", "z"}, {r * c, r * s, c}, {r, 1 + 0 * r, 2 + s},
                             {3 * pow(c, 2) + 3 * pow(s, 2) - 3, pow(r, 2) - c}};
-  std::optional<RationalParametrization> rational = rational_circles(p);
+  std::optional<RationalParametrization> rational = rationalCircles(p);
   ASSERT_TRUE(rational);
   EXPECT_EQ(rational->parameters.size(), 2u);
   ASSERT_EQ(rational->relations.size(), 1u);
-  EXPECT_FALSE(rational_circles(*rational));
+  EXPECT_FALSE(rationalCircles(*rational));
   RationalParametrization ellipse = p;
   ellipse.relations = {pow(c, 2) + 2 * pow(s, 2) - 1};
-  EXPECT_FALSE(rational_circles(ellipse));
+  EXPECT_FALSE(rationalCircles(ellipse));
   // Dupin's cyclide with cos/sin variables goes by interpolation of the
   // rational form; the equation is the one of the half-angle input.
-  std::map<std::string, Polynomial> by_name;
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  std::map<std::string, Polynomial> byName;
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     if (example.name.rfind("dupin-cyclide/", 0) != 0) continue;
     ImplicitizationResult result = implicitize(example.parametrization);
     ASSERT_TRUE(result.ok()) << result.message;
-    by_name.emplace(example.name, result.generators.at(0));
+    byName.emplace(example.name, result.generators.at(0));
     if (example.name == "dupin-cyclide/cs") {
       EXPECT_EQ(result.method, "half-angle+interpolation");
     }
   }
-  ASSERT_EQ(by_name.size(), 2u);
-  EXPECT_EQ(by_name.at("dupin-cyclide/cs"), by_name.at("dupin-cyclide/half-angle"));
+  ASSERT_EQ(byName.size(), 2u);
+  EXPECT_EQ(byName.at("dupin-cyclide/cs"), byName.at("dupin-cyclide/half-angle"));
 }
 
 TEST(Implicitization, ReducesFractionsBeforeTakingTheLcm) {
@@ -155,16 +155,16 @@ TEST(Implicitization, ClassicSurfacesVanishOnTheirParametrizations) {
   // Every classic surface gives one equation that vanishes exactly on the
   // parametrization, and the c/s-with-relation and half-angle forms of each
   // trigonometric surface give the same equation.
-  std::map<std::string, Polynomial> by_surface;
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  std::map<std::string, Polynomial> bySurface;
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     SCOPED_TRACE(example.name);
     ImplicitizationResult r = implicitize(example.parametrization);
     ASSERT_TRUE(r.ok()) << r.message;
     ASSERT_EQ(r.generators.size(), 1u);
     const Polynomial& f = r.generators.front();
-    EXPECT_TRUE(substitute_parametrization(f, example.parametrization).is_zero()) << f;
+    EXPECT_TRUE(substituteParametrization(f, example.parametrization).isZero()) << f;
     const std::string surface = example.name.substr(0, example.name.find('/'));
-    auto [it, inserted] = by_surface.emplace(surface, f);
+    auto [it, inserted] = bySurface.emplace(surface, f);
     if (!inserted) {
       EXPECT_EQ(it->second, f);
     }
@@ -172,36 +172,36 @@ TEST(Implicitization, ClassicSurfacesVanishOnTheirParametrizations) {
 }
 
 
-RationalParametrization twisted_cubic() {
+RationalParametrization twistedCubic() {
   auto t = Ring::make({"t"});
   Polynomial tv = t->var("t");
   return {{"t"}, {"x", "y", "z"}, {tv, pow(tv, 2), pow(tv, 3)}, {}, {}};
 }
 
-std::vector<std::string> twisted_cubic_basis(EliminationOrder order, GroebnerMethod method) {
+std::vector<std::string> twistedCubicBasis(EliminationOrder order, GroebnerMethod method) {
   ImplicitizationOptions options;
   options.order = order;
   options.groebner.method = method;
-  ImplicitizationResult r = implicitize(twisted_cubic(), options);
+  ImplicitizationResult r = implicitize(twistedCubic(), options);
   EXPECT_TRUE(r.ok()) << r.message;
-  EXPECT_EQ(r.ring->order(), coordinate_order(order));
+  EXPECT_EQ(r.ring->order(), coordinateOrder(order));
   std::vector<Polynomial> monic;
   for (const Polynomial& g : r.generators) monic.push_back(g.monic());
-  EXPECT_TRUE(is_reduced_groebner_basis(monic));
+  EXPECT_TRUE(isReducedGroebnerBasis(monic));
   return strings(r.generators);
 }
 
 TEST(ImplicitizationOrder, EveryOrderGivesTheReducedBasisOfItsCoordinateOrder) {
-  for (GroebnerMethod method : {GroebnerMethod::automatic, GroebnerMethod::rational}) {
-    SCOPED_TRACE(method == GroebnerMethod::rational ? "rational" : "automatic");
-    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::block_degrevlex, method),
+  for (GroebnerMethod method : {GroebnerMethod::Automatic, GroebnerMethod::Rational}) {
+    SCOPED_TRACE(method == GroebnerMethod::Rational ? "rational" : "automatic");
+    EXPECT_EQ(twistedCubicBasis(EliminationOrder::BlockDegrevlex, method),
               (std::vector<std::string>{"y^2 - x*z", "x*y - z", "x^2 - y"}));
     const std::vector<std::string> lex{"y^3 - z^2", "x*z - y^2", "x*y - z", "x^2 - y"};
-    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::block_lex, method), lex);
-    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::lex, method), lex);
+    EXPECT_EQ(twistedCubicBasis(EliminationOrder::BlockLex, method), lex);
+    EXPECT_EQ(twistedCubicBasis(EliminationOrder::Lex, method), lex);
     // deglex ranks x*z above y^2, which leaves y^3 - z^2 outside the ideal
     // of the quadrics' leading monomials
-    EXPECT_EQ(twisted_cubic_basis(EliminationOrder::block_deglex, method),
+    EXPECT_EQ(twistedCubicBasis(EliminationOrder::BlockDeglex, method),
               (std::vector<std::string>{"x*z - y^2", "x*y - z", "x^2 - y", "y^3 - z^2"}));
   }
 }
@@ -210,7 +210,7 @@ TEST(ImplicitizationOrder, OneEquationIsTheSameUnderEveryOrder) {
   auto ring = Ring::make({"u", "v"});
   Polynomial u = ring->var("u"), v = ring->var("v");
   RationalParametrization whitney{{"u", "v"}, {"x", "y", "z"}, {u * v, v, pow(u, 2)}, {}, {}};
-  for (const EliminationOrderName& entry : elimination_orders()) {
+  for (const EliminationOrderName& entry : eliminationOrders()) {
     SCOPED_TRACE(entry.name);
     ImplicitizationOptions options;
     options.order = entry.order;
@@ -221,11 +221,11 @@ TEST(ImplicitizationOrder, OneEquationIsTheSameUnderEveryOrder) {
 }
 
 TEST(ImplicitizationOrder, NamesReadBack) {
-  EXPECT_EQ(elimination_orders().front().order, ImplicitizationOptions{}.order);
-  for (const EliminationOrderName& entry : elimination_orders()) {
-    EXPECT_EQ(elimination_order_from_name(entry.name), entry.order);
+  EXPECT_EQ(eliminationOrders().front().order, ImplicitizationOptions{}.order);
+  for (const EliminationOrderName& entry : eliminationOrders()) {
+    EXPECT_EQ(eliminationOrderFromName(entry.name), entry.order);
   }
-  EXPECT_FALSE(elimination_order_from_name("degrevlex"));
+  EXPECT_FALSE(eliminationOrderFromName("degrevlex"));
 }
 
 }  // namespace

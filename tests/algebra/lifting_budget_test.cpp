@@ -27,8 +27,8 @@ struct Outcome {
 };
 
 // Lifts the whole reduced basis of `input` and cancels when the basis modulo
-// the `cancel_at`-th usable prime is handed to the lifter.
-Outcome lift_cancelled_at(const std::vector<Polynomial>& input, std::size_t cancel_at) {
+// the `cancelAt`-th usable prime is handed to the lifter.
+Outcome liftCancelledAt(const std::vector<Polynomial>& input, std::size_t cancelAt) {
   auto token = std::make_shared<CancelToken>();
   Budget budget;
   budget.cancel = token;
@@ -38,7 +38,7 @@ Outcome lift_cancelled_at(const std::vector<Polynomial>& input, std::size_t canc
   LiftTarget target;
   target.ring = input.front().ring();
   target.extract = [&](std::vector<ModPoly> basis, const ModularDomain&) {
-    if (++outcome.bases == cancel_at) token->cancel();
+    if (++outcome.bases == cancelAt) token->cancel();
     return basis;
   };
   target.verify = [&](const std::vector<Polynomial>&) {
@@ -46,16 +46,16 @@ Outcome lift_cancelled_at(const std::vector<Polynomial>& input, std::size_t canc
     return true;
   };
   try {
-    modular_groebner(input, target.ring, monitor, stats, &target);
+    modularGroebner(input, target.ring, monitor, stats, &target);
   } catch (const BudgetExceeded& e) {
     outcome.exceeded = e;
   }
   return outcome;
 }
 
-void expect_cancelled_while_lifting(const Outcome& outcome, std::size_t bases) {
+void expectCancelledWhileLifting(const Outcome& outcome, std::size_t bases) {
   ASSERT_TRUE(outcome.exceeded.has_value()) << "the lift ran to the end";
-  EXPECT_EQ(outcome.exceeded->status, Status::cancelled);
+  EXPECT_EQ(outcome.exceeded->status, Status::Cancelled);
   EXPECT_EQ(outcome.exceeded->message.rfind("cancelled after ", 0), 0u) << outcome.exceeded->message;
   EXPECT_NE(outcome.exceeded->message.find("(lifting, "), std::string::npos) << outcome.exceeded->message;
   EXPECT_EQ(outcome.bases, bases);
@@ -64,15 +64,15 @@ void expect_cancelled_while_lifting(const Outcome& outcome, std::size_t bases) {
 
 class LiftingBudget : public ::testing::Test {
  protected:
-  RingPtr ring = Ring::make({"x"});
-  Polynomial x = ring->var("x");
+  RingPtr ring_ = Ring::make({"x"});
+  Polynomial x_ = ring_->var("x");
 
   // The sum of c(k) x^k for k < degree, plus x^degree: a basis of one
   // element with degree + 1 terms, enough for the lifter's ticks to read
   // the clock (tick looks every 64th call).
   Polynomial dense(int degree, const std::function<Rational(int)>& c) const {
-    Polynomial f = pow(x, degree);
-    for (int k = 0; k < degree; ++k) f += c(k) * pow(x, k);
+    Polynomial f = pow(x_, degree);
+    for (int k = 0; k < degree; ++k) f += c(k) * pow(x_, k);
     return f;
   }
 };
@@ -80,8 +80,8 @@ class LiftingBudget : public ::testing::Test {
 TEST_F(LiftingBudget, ReconstructionChecksTheBudget) {
   // Small coefficients reconstruct from the first prime alone: its lift is
   // a copy and a reconstruction of every coefficient.
-  Outcome outcome = lift_cancelled_at({dense(200, [](int k) -> Rational { return Rational(k % 7 + 1) / 3; })}, 1);
-  expect_cancelled_while_lifting(outcome, 1);
+  Outcome outcome = liftCancelledAt({dense(200, [](int k) -> Rational { return Rational(k % 7 + 1) / 3; })}, 1);
+  expectCancelledWhileLifting(outcome, 1);
 }
 
 TEST_F(LiftingBudget, ChineseRemainderingChecksTheBudget) {
@@ -89,15 +89,15 @@ TEST_F(LiftingBudget, ChineseRemainderingChecksTheBudget) {
   // basis is only combined with the others: after the eighth, the next
   // reconstruction is scheduled for the tenth (see Lifter::add).
   const Rational big(mpz_class(1) << 200);
-  Outcome outcome = lift_cancelled_at({dense(200, [&](int k) -> Rational { return big + k; })}, 9);
-  expect_cancelled_while_lifting(outcome, 9);
+  Outcome outcome = liftCancelledAt({dense(200, [&](int k) -> Rational { return big + k; })}, 9);
+  expectCancelledWhileLifting(outcome, 9);
 }
 
 TEST_F(LiftingBudget, ComparisonWithTheNextPrimeChecksTheBudget) {
   // The first prime's candidate is right; the second prime's basis is
   // compared with it before the verification would accept it.
-  Outcome outcome = lift_cancelled_at({dense(3, [](int k) -> Rational { return Rational(k + 1) / 2; })}, 2);
-  expect_cancelled_while_lifting(outcome, 2);
+  Outcome outcome = liftCancelledAt({dense(3, [](int k) -> Rational { return Rational(k + 1) / 2; })}, 2);
+  expectCancelledWhileLifting(outcome, 2);
 }
 
 TEST(EliminationBudget, MembershipTestsCheckTheBudget) {
@@ -119,10 +119,10 @@ TEST(EliminationBudget, MembershipTestsCheckTheBudget) {
     return true;
   };
   try {
-    modular_elimination(ideal, {"t"}, remaining, contains, monitor, stats);
+    modularElimination(ideal, {"t"}, remaining, contains, monitor, stats);
     ADD_FAILURE() << "the elimination ran to the end";
   } catch (const BudgetExceeded& e) {
-    EXPECT_EQ(e.status, Status::cancelled);
+    EXPECT_EQ(e.status, Status::Cancelled);
     EXPECT_NE(e.message.find("(verification, "), std::string::npos) << e.message;
   }
   EXPECT_EQ(tests, 1u);

@@ -14,26 +14,26 @@
 namespace sdfwb::algebra {
 namespace {
 
-bool singular_required() {
+bool singularRequired() {
   const char* value = std::getenv("SDFWB_REQUIRE_SINGULAR");
   return value && std::string(value) == "1";
 }
 
 #define SKIP_WITHOUT_SINGULAR()                                                                   \
   do {                                                                                           \
-    if (!testing::singular_path()) {                                                             \
-      if (singular_required()) FAIL() << "Singular is required (SDFWB_REQUIRE_SINGULAR=1) but missing"; \
+    if (!testing::singularPath()) {                                                             \
+      if (singularRequired()) FAIL() << "Singular is required (SDFWB_REQUIRE_SINGULAR=1) but missing"; \
       GTEST_SKIP() << "Singular is not installed";                                               \
     }                                                                                            \
   } while (false)
 
 TEST(SingularCrossCheck, ReducedBasesAgree) {
   SKIP_WITHOUT_SINGULAR();
-  for (const testing::NamedSystem& system : testing::small_systems()) {
+  for (const testing::NamedSystem& system : testing::smallSystems()) {
     SCOPED_TRACE(system.name);
-    GroebnerResult ours = groebner_basis(system.ideal);
+    GroebnerResult ours = groebnerBasis(system.ideal);
     ASSERT_TRUE(ours.ok()) << ours.message;
-    testing::SingularResult theirs = testing::singular_std(system.ideal, 30);
+    testing::SingularResult theirs = testing::singularStd(system.ideal, 30);
     ASSERT_TRUE(theirs.ok) << theirs.error;
     ASSERT_EQ(ours.basis.size(), theirs.basis.size());
     for (std::size_t i = 0; i < ours.basis.size(); ++i) {
@@ -44,12 +44,12 @@ TEST(SingularCrossCheck, ReducedBasesAgree) {
 
 TEST(SingularCrossCheck, ImplicitEquationsAgree) {
   SKIP_WITHOUT_SINGULAR();
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     SCOPED_TRACE(example.name);
     ImplicitizationResult ours = implicitize(example.parametrization);
     ASSERT_TRUE(ours.ok()) << ours.message;
-    EliminationProblem problem = implicitization_ideal(example.parametrization);
-    testing::SingularResult theirs = testing::singular_eliminate(problem.ideal, problem.eliminated, ours.ring, 30);
+    EliminationProblem problem = implicitizationIdeal(example.parametrization);
+    testing::SingularResult theirs = testing::singularEliminate(problem.ideal, problem.eliminated, ours.ring, 30);
     ASSERT_TRUE(theirs.ok) << theirs.error;
     ASSERT_EQ(ours.generators.size(), theirs.basis.size());
     for (std::size_t i = 0; i < ours.generators.size(); ++i) {
@@ -62,17 +62,17 @@ TEST(SingularCrossCheck, ImplicitEquationsAgree) {
 // its eliminate: random small inputs of every shape the new routes take.
 TEST(SingularCrossCheck, PatchEquationsAgree) {
   SKIP_WITHOUT_SINGULAR();
-  std::vector<testing::NamedParametrization> examples = testing::patch_parametrizations(4);
+  std::vector<testing::NamedParametrization> examples = testing::patchParametrizations(4);
   for (unsigned seed = 100; seed < 104; ++seed) {
-    examples.push_back({"random bilinear " + std::to_string(seed), testing::bezier_patch(1, 1, true, seed)});
-    examples.push_back({"random 2x1 " + std::to_string(seed), testing::bezier_patch(2, 1, seed % 2 == 0, seed)});
+    examples.push_back({"random bilinear " + std::to_string(seed), testing::bezierPatch(1, 1, true, seed)});
+    examples.push_back({"random 2x1 " + std::to_string(seed), testing::bezierPatch(2, 1, seed % 2 == 0, seed)});
   }
   for (const testing::NamedParametrization& example : examples) {
     SCOPED_TRACE(example.name);
     ImplicitizationResult ours = implicitize(example.parametrization);
     ASSERT_TRUE(ours.ok()) << ours.message;
-    EliminationProblem problem = implicitization_ideal(example.parametrization);
-    testing::SingularResult theirs = testing::singular_eliminate(problem.ideal, problem.eliminated, ours.ring, 30);
+    EliminationProblem problem = implicitizationIdeal(example.parametrization);
+    testing::SingularResult theirs = testing::singularEliminate(problem.ideal, problem.eliminated, ours.ring, 30);
     ASSERT_TRUE(theirs.ok) << theirs.error;
     ASSERT_EQ(ours.generators.size(), 1u);
     ASSERT_EQ(theirs.basis.size(), 1u);

@@ -15,11 +15,11 @@ namespace sdfwb::algebra::testing {
 
 namespace {
 
-std::string order_name(const MonomialOrder& order, std::size_t size) {
+std::string orderName(const MonomialOrder& order, std::size_t size) {
   switch (order.kind()) {
-    case MonomialOrder::Kind::lex: return size ? "lp(" + std::to_string(size) + ")" : "lp";
-    case MonomialOrder::Kind::deglex: return size ? "Dp(" + std::to_string(size) + ")" : "Dp";
-    case MonomialOrder::Kind::degrevlex: return size ? "dp(" + std::to_string(size) + ")" : "dp";
+    case MonomialOrder::Kind::Lex: return size ? "lp(" + std::to_string(size) + ")" : "lp";
+    case MonomialOrder::Kind::Deglex: return size ? "Dp(" + std::to_string(size) + ")" : "Dp";
+    case MonomialOrder::Kind::Degrevlex: return size ? "dp(" + std::to_string(size) + ")" : "dp";
     default: return {};
   }
 }
@@ -29,12 +29,12 @@ RingPtr renamed(const Ring& ring, const std::vector<std::string>& names) {
   return Ring::make(names, ring.order());
 }
 
-std::string as_singular(const Polynomial& p, const RingPtr& renamed_ring) {
-  return Polynomial(renamed_ring, p.terms()).to_string();
+std::string asSingular(const Polynomial& p, const RingPtr& renamedRing) {
+  return Polynomial(renamedRing, p.terms()).toString();
 }
 
-std::string run(const std::string& script, double timeout_seconds, std::string& error) {
-  std::optional<std::string> exe = singular_path();
+std::string run(const std::string& script, double timeoutSeconds, std::string& error) {
+  std::optional<std::string> exe = singularPath();
   if (!exe) {
     error = "Singular is not installed";
     return {};
@@ -45,7 +45,7 @@ std::string run(const std::string& script, double timeout_seconds, std::string& 
     std::ofstream out(file);
     out << script;
   }
-  std::string command = "timeout -s KILL " + std::to_string(static_cast<int>(timeout_seconds + 1)) + " " + *exe +
+  std::string command = "timeout -s KILL " + std::to_string(static_cast<int>(timeoutSeconds + 1)) + " " + *exe +
                         " -q --no-rc --no-warn " + file.string() + " 2>&1";
   std::string output;
   if (FILE* pipe = ::popen(command.c_str(), "r")) {
@@ -61,7 +61,7 @@ std::string run(const std::string& script, double timeout_seconds, std::string& 
   return output;
 }
 
-std::vector<std::string> var_names(const char* prefix, std::size_t n) {
+std::vector<std::string> varNames(const char* prefix, std::size_t n) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < n; ++i) names.push_back(prefix + std::to_string(i));
   return names;
@@ -78,7 +78,7 @@ constexpr const char* kPrintTime =
     "print(\"TIME \" + string(rtimer - t) + \" \" + string(timer - c) + \" \" + string(reps));\n";
 
 // Reads "TIME <wall ms> <cpu ms> <repetitions>" and the lines between BEGIN and END.
-SingularResult read_output(const std::string& output, const RingPtr& ring, const char* prefix,
+SingularResult readOutput(const std::string& output, const RingPtr& ring, const char* prefix,
                            std::string error) {
   SingularResult result;
   std::istringstream in(output);
@@ -89,18 +89,18 @@ SingularResult read_output(const std::string& output, const RingPtr& ring, const
     while (std::getline(in, line)) {
       if (line.rfind("TIME ", 0) == 0) {
         std::istringstream times(line.substr(5));
-        double wall_ms = 0, cpu_ms = 0, repetitions = 1;
-        times >> wall_ms >> cpu_ms >> repetitions;
-        result.seconds = wall_ms / 1000.0 / repetitions;
-        result.cpu_seconds = cpu_ms / 1000.0 / repetitions;
+        double wallMs = 0, cpuMs = 0, repetitions = 1;
+        times >> wallMs >> cpuMs >> repetitions;
+        result.seconds = wallMs / 1000.0 / repetitions;
+        result.cpuSeconds = cpuMs / 1000.0 / repetitions;
       } else if (line == "BEGIN") {
         inside = true;
       } else if (line == "END") {
         done = true;
         inside = false;
       } else if (inside && !line.empty()) {
-        Polynomial p = parse_singular_polynomial(line, ring, prefix);
-        if (!p.is_zero()) result.basis.push_back(p.monic());
+        Polynomial p = parseSingularPolynomial(line, ring, prefix);
+        if (!p.isZero()) result.basis.push_back(p.monic());
       }
     }
   } catch (const std::exception& e) {
@@ -108,7 +108,7 @@ SingularResult read_output(const std::string& output, const RingPtr& ring, const
   }
   if (!done && error.empty()) error = "unexpected Singular output: " + output.substr(0, 300);
   std::sort(result.basis.begin(), result.basis.end(), [&](const Polynomial& a, const Polynomial& b) {
-    return ring->compare(a.leading_monomial(), b.leading_monomial()) < 0;
+    return ring->compare(a.leadingMonomial(), b.leadingMonomial()) < 0;
   });
   result.ok = error.empty();
   result.error = error;
@@ -122,37 +122,37 @@ const char* kPrintBasis =
 
 }  // namespace
 
-std::optional<std::string> singular_path() {
+std::optional<std::string> singularPath() {
   for (const char* candidate : {"/usr/bin/Singular", "/usr/local/bin/Singular"}) {
     if (::access(candidate, X_OK) == 0) return std::string(candidate);
   }
   return std::nullopt;
 }
 
-std::optional<std::string> singular_order(const Ring& ring) {
+std::optional<std::string> singularOrder(const Ring& ring) {
   const MonomialOrder& order = ring.order();
   switch (order.kind()) {
-    case MonomialOrder::Kind::lex:
-    case MonomialOrder::Kind::deglex:
-    case MonomialOrder::Kind::degrevlex:
-      return order_name(order, 0);
-    case MonomialOrder::Kind::weighted: {
+    case MonomialOrder::Kind::Lex:
+    case MonomialOrder::Kind::Deglex:
+    case MonomialOrder::Kind::Degrevlex:
+      return orderName(order, 0);
+    case MonomialOrder::Kind::Weighted: {
       // Our weighted order is "weights, then the tie-break order", which is
       // Singular's extra weight vector a(w) followed by the tie-break.
-      std::string tie = order_name(order.tie_break(), 0);
+      std::string tie = orderName(order.tieBreak(), 0);
       if (tie.empty()) return std::nullopt;
       std::string weights;
       for (std::int64_t w : order.weights()) weights += (weights.empty() ? "" : ",") + std::to_string(w);
       return "(a(" + weights + ")," + tie + ")";
     }
-    case MonomialOrder::Kind::block: {
+    case MonomialOrder::Kind::Block: {
       std::string text = "(";
       std::size_t used = 0;
       for (std::size_t i = 0; i < order.blocks().size(); ++i) {
         std::size_t size = order.blocks()[i].size;
         if (size == 0) size = ring.size() - used;
         used += size;
-        std::string part = order_name(order.blocks()[i].order, size);
+        std::string part = orderName(order.blocks()[i].order, size);
         if (part.empty()) return std::nullopt;
         text += (i ? "," : "") + part;
       }
@@ -162,14 +162,14 @@ std::optional<std::string> singular_order(const Ring& ring) {
   return std::nullopt;
 }
 
-Polynomial parse_singular_polynomial(const std::string& text, const RingPtr& ring, const char* prefix) {
+Polynomial parseSingularPolynomial(const std::string& text, const RingPtr& ring, const char* prefix) {
   std::vector<Term> terms;
   std::size_t pos = 0;
   const std::string p = prefix;
   auto fail = [&](const std::string& what) {
     throw std::runtime_error(what + " at column " + std::to_string(pos + 1) + " of '" + text + "'");
   };
-  auto read_number = [&]() {
+  auto readNumber = [&]() {
     std::size_t start = pos;
     while (pos < text.size() && (std::isdigit(static_cast<unsigned char>(text[pos])) || text[pos] == '/')) ++pos;
     if (start == pos) fail("number expected");
@@ -185,10 +185,10 @@ Polynomial parse_singular_polynomial(const std::string& text, const RingPtr& rin
     } else if (!terms.empty()) {
       fail("'+' or '-' expected");
     }
-    Term term{ring->one_monomial(), Rational(sign)};
+    Term term{ring->oneMonomial(), Rational(sign)};
     for (;;) {
       if (pos < text.size() && std::isdigit(static_cast<unsigned char>(text[pos]))) {
-        term.coefficient *= read_number();
+        term.coefficient *= readNumber();
       } else if (text.compare(pos, p.size(), p) == 0) {
         pos += p.size();
         std::size_t start = pos;
@@ -219,17 +219,17 @@ Polynomial parse_singular_polynomial(const std::string& text, const RingPtr& rin
   return Polynomial(ring, std::move(terms));
 }
 
-SingularResult singular_std(const Ideal& ideal, double timeout_seconds, const std::string& command) {
+SingularResult singularStd(const Ideal& ideal, double timeoutSeconds, const std::string& command) {
   const Ring& ring = *ideal.ring();
-  std::optional<std::string> order = singular_order(ring);
+  std::optional<std::string> order = singularOrder(ring);
   if (!order) return SingularResult{false, "no Singular name for order " + ring.order().describe(), {}, 0};
-  std::vector<std::string> names = var_names("v", ring.size());
+  std::vector<std::string> names = varNames("v", ring.size());
   RingPtr named = renamed(ring, names);
   std::string script = "ring r = 0, (";
   for (std::size_t i = 0; i < names.size(); ++i) script += (i ? "," : "") + names[i];
   script += "), " + *order + ";\nshort = 0;\noption(redSB);\nsystem(\"--ticks-per-sec\", 1000);\nideal i = ";
   for (std::size_t k = 0; k < ideal.generators().size(); ++k) {
-    script += (k ? ",\n  " : "") + as_singular(ideal.generators()[k], named);
+    script += (k ? ",\n  " : "") + asSingular(ideal.generators()[k], named);
   }
   if (ideal.generators().empty()) script += "0";
   script += ";\nideal g;\n";
@@ -239,12 +239,12 @@ SingularResult singular_std(const Ideal& ideal, double timeout_seconds, const st
   script += kPrintBasis;
   script += "quit;\n";
   std::string error;
-  std::string output = run(script, timeout_seconds, error);
-  return read_output(output, ideal.ring(), "v", error);
+  std::string output = run(script, timeoutSeconds, error);
+  return readOutput(output, ideal.ring(), "v", error);
 }
 
-SingularResult singular_eliminate(const Ideal& ideal, const std::vector<std::string>& eliminated,
-                                  const RingPtr& target, double timeout_seconds) {
+SingularResult singularEliminate(const Ideal& ideal, const std::vector<std::string>& eliminated,
+                                  const RingPtr& target, double timeoutSeconds) {
   const Ring& ring = *ideal.ring();
   // Remaining variables are named after their index in `target` (w0, w1...),
   // eliminated ones e0, e1, ...
@@ -257,31 +257,31 @@ SingularResult singular_eliminate(const Ideal& ideal, const std::vector<std::str
       names.push_back("e" + std::to_string(e++));
       product += (product.empty() ? "" : "*") + names.back();
     } else {
-      std::optional<std::size_t> j = target->index_of(v);
+      std::optional<std::size_t> j = target->indexOf(v);
       if (!j) return SingularResult{false, "variable " + v + " is missing from the target ring", {}, 0};
       names.push_back("w" + std::to_string(*j));
     }
   }
-  std::optional<std::string> target_order = singular_order(*target);
-  if (!target_order) return SingularResult{false, "no Singular name for the target order", {}, 0};
+  std::optional<std::string> targetOrder = singularOrder(*target);
+  if (!targetOrder) return SingularResult{false, "no Singular name for the target order", {}, 0};
   RingPtr named = Ring::make(names, MonomialOrder::degrevlex());
   std::string script = "ring r = 0, (";
   for (std::size_t i = 0; i < names.size(); ++i) script += (i ? "," : "") + names[i];
   script += "), dp;\nshort = 0;\nsystem(\"--ticks-per-sec\", 1000);\nideal i = ";
   for (std::size_t k = 0; k < ideal.generators().size(); ++k) {
-    script += (k ? ",\n  " : "") + Polynomial(named, ideal.generators()[k].terms()).to_string();
+    script += (k ? ",\n  " : "") + Polynomial(named, ideal.generators()[k].terms()).toString();
   }
   script += ";\nideal el;\nring s = 0, (";
   for (std::size_t j = 0; j < target->size(); ++j) script += (j ? "," : "") + std::string("w") + std::to_string(j);
-  script += "), " + *target_order + ";\nshort = 0;\noption(redSB);\nideal g;\n";
+  script += "), " + *targetOrder + ";\nshort = 0;\noption(redSB);\nideal g;\n";
   script += kRepeatUntil;
   script += "  setring r;\n  el = eliminate(i, " + product + ");\n  setring s;\n  g = std(imap(r, el));\n  reps++;\n}\n";
   script += kPrintTime;
   script += kPrintBasis;
   script += "quit;\n";
   std::string error;
-  std::string output = run(script, timeout_seconds, error);
-  return read_output(output, target, "w", error);
+  std::string output = run(script, timeoutSeconds, error);
+  return readOutput(output, target, "w", error);
 }
 
 }  // namespace sdfwb::algebra::testing

@@ -31,37 +31,37 @@
 namespace sdfwb::algebra {
 namespace {
 
-double singular_timeout() {
+double singularTimeout() {
   const char* value = std::getenv("SDFWB_SINGULAR_TIMEOUT");
   return value ? std::atof(value) : 120.0;
 }
 
 // Ours gets its own limit, so a short Singular timeout still lets ours finish.
-double ours_timeout() {
+double oursTimeout() {
   const char* value = std::getenv("SDFWB_OURS_TIMEOUT");
   return value ? std::atof(value) : 600.0;
 }
 
-double cpu_now() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+double cpuNow() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-void report(benchmark::State& state, const testing::SingularResult& singular, double ours_wall, double ours_cpu) {
-  state.counters["ours_s"] = ours_wall;
-  state.counters["ours_cpu_s"] = ours_cpu;
+void report(benchmark::State& state, const testing::SingularResult& singular, double oursWall, double oursCpu) {
+  state.counters["ours_s"] = oursWall;
+  state.counters["ours_cpu_s"] = oursCpu;
   state.counters["singular_s"] = singular.ok ? singular.seconds : -1;
-  state.counters["singular_cpu_s"] = singular.ok ? singular.cpu_seconds : -1;
+  state.counters["singular_cpu_s"] = singular.ok ? singular.cpuSeconds : -1;
   // Times under a millisecond count as a millisecond on both sides.
-  if (singular.ok) state.counters["cpu_ratio"] = std::max(ours_cpu, 0.001) / std::max(singular.cpu_seconds, 0.001);
+  if (singular.ok) state.counters["cpu_ratio"] = std::max(oursCpu, 0.001) / std::max(singular.cpuSeconds, 0.001);
 }
 
-void register_groebner(const std::string& name, std::function<Ideal()> make, const std::string& singular_command) {
-  benchmark::RegisterBenchmark(("groebner/" + name).c_str(), [make, singular_command](benchmark::State& state) {
+void registerGroebner(const std::string& name, std::function<Ideal()> make, const std::string& singularCommand) {
+  benchmark::RegisterBenchmark(("groebner/" + name).c_str(), [make, singularCommand](benchmark::State& state) {
     const Ideal ideal = make();
-    const testing::SingularResult singular = testing::singular_std(ideal, singular_timeout(), singular_command);
+    const testing::SingularResult singular = testing::singularStd(ideal, singularTimeout(), singularCommand);
     double wall = 0, cpu = 0;
     for (auto _ : state) {
-      const double start = cpu_now();
-      GroebnerResult result = groebner_basis(ideal);
-      cpu = cpu_now() - start;
+      const double start = cpuNow();
+      GroebnerResult result = groebnerBasis(ideal);
+      cpu = cpuNow() - start;
       wall = result.seconds;
       if (!result.ok()) state.SkipWithError(result.message.c_str());
       state.counters["basis"] = static_cast<double>(result.basis.size());
@@ -72,25 +72,25 @@ void register_groebner(const std::string& name, std::function<Ideal()> make, con
   })->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 
-void register_implicitization(const testing::NamedParametrization& example, DenominatorStrategy denominator,
-                              EliminationOrder order = EliminationOrder::block_degrevlex) {
-  const std::string prefix = denominator == DenominatorStrategy::product ? "implicitize-product/"
-                             : order == EliminationOrder::lex           ? "implicitize-lex/"
+void registerImplicitization(const testing::NamedParametrization& example, DenominatorStrategy denominator,
+                              EliminationOrder order = EliminationOrder::BlockDegrevlex) {
+  const std::string prefix = denominator == DenominatorStrategy::Product ? "implicitize-product/"
+                             : order == EliminationOrder::Lex           ? "implicitize-lex/"
                                                                         : "implicitize/";
   benchmark::RegisterBenchmark((prefix + example.name).c_str(), [example, denominator, order](benchmark::State& state) {
-    const EliminationProblem problem = implicitization_ideal(example.parametrization, denominator);
+    const EliminationProblem problem = implicitizationIdeal(example.parametrization, denominator);
     const RingPtr target = Ring::make(example.parametrization.coordinates);
     const testing::SingularResult singular =
-        testing::singular_eliminate(problem.ideal, problem.eliminated, target, singular_timeout());
+        testing::singularEliminate(problem.ideal, problem.eliminated, target, singularTimeout());
     double wall = 0, cpu = 0;
     for (auto _ : state) {
       ImplicitizationOptions options;
       options.denominator = denominator;
       options.order = order;
-      options.groebner.budget.time_limit_seconds = ours_timeout();
-      const double start = cpu_now();
+      options.groebner.budget.timeLimitSeconds = oursTimeout();
+      const double start = cpuNow();
       ImplicitizationResult result = implicitize(example.parametrization, options);
-      cpu = cpu_now() - start;
+      cpu = cpuNow() - start;
       wall = result.seconds;
       if (!result.ok()) {
         state.SkipWithError(result.message.c_str());
@@ -100,60 +100,60 @@ void register_implicitization(const testing::NamedParametrization& example, Deno
       state.counters["primes"] = static_cast<double>(result.stats.primes);
       state.counters["generators"] = static_cast<double>(result.generators.size());
       if (!result.generators.empty()) {
-        state.counters["degree"] = static_cast<double>(result.generators.front().total_degree());
-        state.counters["terms"] = static_cast<double>(result.generators.front().term_count());
+        state.counters["degree"] = static_cast<double>(result.generators.front().totalDegree());
+        state.counters["terms"] = static_cast<double>(result.generators.front().termCount());
       }
     }
     report(state, singular, wall, cpu);
   })->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 
-void register_all() {
+void registerAll() {
   for (int n : {5, 6, 7, 8}) {
-    register_groebner("katsura" + std::to_string(n) + "/degrevlex", [n] { return testing::katsura(n); }, "std");
+    registerGroebner("katsura" + std::to_string(n) + "/degrevlex", [n] { return testing::katsura(n); }, "std");
   }
   for (int n : {5, 6, 7}) {
-    register_groebner("cyclic" + std::to_string(n) + "/degrevlex", [n] { return testing::cyclic(n); }, "std");
+    registerGroebner("cyclic" + std::to_string(n) + "/degrevlex", [n] { return testing::cyclic(n); }, "std");
   }
   // Lex: ours goes through degrevlex and FGLM; Singular is given both its
   // plain std in lex and its own stdfglm.
   for (int n : {4, 5, 6}) {
     for (const char* command : {"std", "stdfglm"}) {
-      register_groebner("katsura" + std::to_string(n) + "/lex/vs-" + command,
+      registerGroebner("katsura" + std::to_string(n) + "/lex/vs-" + command,
                         [n] { return testing::katsura(n, MonomialOrder::lex()); }, command);
     }
   }
   // Cyclic-4 is not zero-dimensional: no FGLM for it.
-  register_groebner("cyclic4/lex/vs-std", [] { return testing::cyclic(4, MonomialOrder::lex()); }, "std");
+  registerGroebner("cyclic4/lex/vs-std", [] { return testing::cyclic(4, MonomialOrder::lex()); }, "std");
   for (const char* command : {"std", "stdfglm"}) {
-    register_groebner(std::string("cyclic5/lex/vs-") + command, [] { return testing::cyclic(5, MonomialOrder::lex()); },
+    registerGroebner(std::string("cyclic5/lex/vs-") + command, [] { return testing::cyclic(5, MonomialOrder::lex()); },
                       command);
   }
   // A weighted order and an elimination (block) order.
   for (int n : {4, 5, 6}) {
-    register_groebner("katsura" + std::to_string(n) + "/weighted", [n] {
+    registerGroebner("katsura" + std::to_string(n) + "/weighted", [n] {
       std::vector<std::int64_t> weights;
       for (int i = 0; i <= n; ++i) weights.push_back(1 + i % 2);
       return testing::katsura(n, MonomialOrder::weighted(weights, MonomialOrder::degrevlex()));
     }, "std");
-    register_groebner("katsura" + std::to_string(n) + "/elimination-2", [n] {
+    registerGroebner("katsura" + std::to_string(n) + "/elimination-2", [n] {
       return testing::katsura(n, MonomialOrder::elimination(2));
     }, "std");
   }
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
-    register_implicitization(example, DenominatorStrategy::lcm);
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
+    registerImplicitization(example, DenominatorStrategy::Lcm);
   }
-  for (const testing::NamedParametrization& example : testing::patch_parametrizations()) {
-    register_implicitization(example, DenominatorStrategy::lcm);
+  for (const testing::NamedParametrization& example : testing::patchParametrizations()) {
+    registerImplicitization(example, DenominatorStrategy::Lcm);
   }
   // The textbook's pure lex order against the default block order (Singular
   // runs its eliminate, a block order, in both).
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
-    register_implicitization(example, DenominatorStrategy::lcm, EliminationOrder::lex);
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
+    registerImplicitization(example, DenominatorStrategy::Lcm, EliminationOrder::Lex);
   }
-  for (const testing::NamedParametrization& example : testing::classic_parametrizations()) {
+  for (const testing::NamedParametrization& example : testing::classicParametrizations()) {
     if (example.name.find("half-angle") != std::string::npos) {
-      register_implicitization(example, DenominatorStrategy::product);
+      registerImplicitization(example, DenominatorStrategy::Product);
     }
   }
 }
@@ -162,7 +162,7 @@ void register_all() {
 }  // namespace sdfwb::algebra
 
 int main(int argc, char** argv) {
-  sdfwb::algebra::register_all();
+  sdfwb::algebra::registerAll();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

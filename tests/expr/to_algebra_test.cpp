@@ -87,7 +87,7 @@ TEST_F(ToAlgebra, PolynomialLists) {
   const auto list = parsePolynomials("a^2 - 0.25; let c = a*b; c - 1", ring2);
   ASSERT_EQ(list.size(), 2u);
   EXPECT_EQ(list[0], pow(ring2->var("a"), 2) - Rational(1, 4));
-  EXPECT_EQ(list[1].to_string(), "a*b - 1");
+  EXPECT_EQ(list[1].toString(), "a*b - 1");
   EXPECT_EQ(testing::errorOf([&](std::string_view s) { return parsePolynomials(s, ring2); }, "a + w"),
             "column 5: unknown name 'w' (the variables are the ones listed)");
 }

@@ -124,9 +124,9 @@ TEST(Trig, HalfAngleParametersAndDenominators) {
   const auto ring = algebra::Ring::make(c.parametrization.parameters);
   const auto tv = ring->var("$t_v"), tu = ring->var("$t_u");
   // z = sin(v)/2 = t/(1 + t^2); x and y share the lcm (1 + tu^2)(1 + tv^2).
-  EXPECT_EQ(c.parametrization.numerators[2].in_ring(ring), tv);
-  EXPECT_EQ(c.parametrization.denominators[2].in_ring(ring), 1 + tv * tv);
-  EXPECT_EQ(c.parametrization.denominators[0].in_ring(ring), (1 + tu * tu) * (1 + tv * tv));
+  EXPECT_EQ(c.parametrization.numerators[2].inRing(ring), tv);
+  EXPECT_EQ(c.parametrization.denominators[2].inRing(ring), 1 + tv * tv);
+  EXPECT_EQ(c.parametrization.denominators[0].inRing(ring), (1 + tu * tu) * (1 + tv * tv));
 }
 
 TEST(Trig, RationalMultiplesAreRescaled) {
@@ -136,28 +136,28 @@ TEST(Trig, RationalMultiplesAreRescaled) {
   EXPECT_EQ(c.angles[0].scale, Rational(2));  // u = 2 psi: cos(u/2) = cos psi, cos(u) = cos 2psi
   EXPECT_EQ(c.parametrization.parameters, (std::vector<std::string>{"v", "$c_u", "$s_u"}));  // in order of first use
   ASSERT_EQ(c.parametrization.relations.size(), 1u);
-  EXPECT_EQ(c.parametrization.relations[0].to_string(), "$c_u^2 + $s_u^2 - 1");
+  EXPECT_EQ(c.parametrization.relations[0].toString(), "$c_u^2 + $s_u^2 - 1");
   // Only the gcd of the multiples matters: cos(2v) and sin(4v) use psi = 2v, v = psi/2.
   const TrigConversion d = toRationalParametrization(compileParametricEquations("x = cos(2*v); y = sin(4*v)"),
                                                      TrigStrategy::CosSinRelation);
   EXPECT_EQ(d.angles[0].scale, Rational(1, 2));
-  EXPECT_EQ(d.parametrization.numerators[0].to_string(), "$c_v");
-  EXPECT_EQ(d.parametrization.numerators[1].to_string(), "2*$c_v*$s_v");
+  EXPECT_EQ(d.parametrization.numerators[0].toString(), "$c_v");
+  EXPECT_EQ(d.parametrization.numerators[1].toString(), "2*$c_v*$s_v");
 }
 
 TEST(Trig, SumsTangentsAndPlainParameters) {
   const TrigConversion sum = toRationalParametrization(compileParametricEquations("x = cos(u - v)"),
                                                        TrigStrategy::CosSinRelation);
-  EXPECT_EQ(sum.parametrization.numerators[0].to_string(), "$c_u*$c_v + $s_u*$s_v");
+  EXPECT_EQ(sum.parametrization.numerators[0].toString(), "$c_u*$c_v + $s_u*$s_v");
   const TrigConversion tangent = toRationalParametrization(compileParametricEquations("x = tan(u)"),
                                                            TrigStrategy::HalfAngle);
-  EXPECT_EQ(tangent.parametrization.numerators[0].to_string(), "-2*$t_u");
-  EXPECT_EQ(tangent.parametrization.denominators[0].to_string(), "$t_u^2 - 1");
+  EXPECT_EQ(tangent.parametrization.numerators[0].toString(), "-2*$t_u");
+  EXPECT_EQ(tangent.parametrization.denominators[0].toString(), "$t_u^2 - 1");
   const TrigConversion plain = toRationalParametrization(compileParametricEquations("x = u*v; y = v; z = u^2"),
                                                          TrigStrategy::HalfAngle);
   EXPECT_EQ(plain.parametrization.parameters, (std::vector<std::string>{"u", "v"}));
-  EXPECT_EQ(plain.parametrization.numerators[2].to_string(), "u^2");
-  EXPECT_EQ(plain.parametrization.denominators[0].to_string(), "1");
+  EXPECT_EQ(plain.parametrization.numerators[2].toString(), "u^2");
+  EXPECT_EQ(plain.parametrization.denominators[0].toString(), "1");
 }
 
 TEST(Trig, InternalNamesAvoidUserNames) {
@@ -187,12 +187,12 @@ void expectImplicitEquation(std::string_view source, TrigStrategy strategy, std:
   SCOPED_TRACE(std::string(source));
   const TrigConversion c = parseParametrization(source, strategy);
   algebra::ImplicitizationOptions options;
-  options.groebner.budget.time_limit_seconds = 30;  // milliseconds expected; never hang the suite
+  options.groebner.budget.timeLimitSeconds = 30;  // milliseconds expected; never hang the suite
   const algebra::ImplicitizationResult r = algebra::implicitize(c.parametrization, options);
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_EQ(r.generators.size(), 1u);
   EXPECT_EQ(r.generators[0], parsePolynomials(expected, r.ring)[0].primitive());
-  EXPECT_TRUE(algebra::substitute_parametrization(r.generators[0], c.parametrization).is_zero());
+  EXPECT_TRUE(algebra::substituteParametrization(r.generators[0], c.parametrization).isZero());
 }
 
 TEST(Trig, ImplicitizesClassicSurfaces) {

@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const algebra::RingPtr ring = algebra::Ring::make({"x", "y", "z"});
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     try {
-        for (const algebra::Polynomial& p : expr::parsePolynomials(text, ring)) p.to_string();
+        for (const algebra::Polynomial& p : expr::parsePolynomials(text, ring)) p.toString();
     } catch (const expr::Error&) {
     } catch (const std::invalid_argument&) {
     }

@@ -88,7 +88,7 @@ TEST(PolynomialPanel, ReadsEquationsAsTheyAreTypedAndRunsInTheChosenOrder) {
     EXPECT_EQ(state.problem, "");
     ASSERT_EQ(state.ranges, (std::vector<ParameterRange>{{"t", -1, 1}}));
     state.ranges[0].max = 2;
-    state.request.order = algebra::EliminationOrder::lex;
+    state.request.order = algebra::EliminationOrder::Lex;
     runPolynomial(state);
     state.job.wait();
     PolynomialOutcome o = state.job.outcome().value();

@@ -187,7 +187,7 @@ TEST(ScriptRunTest, PolynomialCommandsImplicitizeAndAddTheSurface) {
                         "s");
     ASSERT_EQ(runUntilDone(runner, editor, ui, host), ScriptStatus::Finished) << runner.error();
     EXPECT_TRUE(host.polynomial.open);
-    EXPECT_EQ(host.polynomial.request.order, algebra::EliminationOrder::lex);
+    EXPECT_EQ(host.polynomial.request.order, algebra::EliminationOrder::Lex);
     ASSERT_EQ(editor.scene().root.children.size(), 1u);
     const scene::Node& node = editor.scene().root.children[0];
     EXPECT_EQ(node.text("formula"), "y^2*z - x^2");
