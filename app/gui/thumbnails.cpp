@@ -41,14 +41,23 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         return texture->second->id();
     }
     if (requested_.insert(key).second) {
-        scene::Scene alone = scene;
+        // the subtree alone with what lights it (not a copy of the whole tree per row)
+        scene::Scene alone;
+        alone.render = scene.render;
+        alone.environment = scene.environment;
+        alone.lights = scene.lights;
+        alone.materials = scene.materials;
         alone.root = node;
         alone.environment.ground.enabled = false;
         alone.camera = ui::framedCamera(scene.camera, node);
         alone.render.aa = 1;
         program::CompileOptions options{kSize, kSize, 1};
         auto frame = std::make_shared<image::Frame>();
-        jobs::JobHandle job = jobs_.submit([program = program::compileScene(alone, options), frame](jobs::Job& job) {
+        // compiled on the worker with the render: a subtree's compile (its
+        // prune grid) is not the UI thread's to pay
+        jobs::JobHandle job = jobs_.submit([alone = std::move(alone), options, frame](jobs::Job& job) {
+            program::Program program = program::compileScene(alone, options);
+            if (job.cancelled()) return;  // superseded by a newer state while compiling
             render::RenderControl control;
             control.threads = 1;  // a thumbnail is small: leave the other cores to the viewport
             control.cancel = &job.cancelFlag();

@@ -1,7 +1,8 @@
 #pragma once
 // Small renders of each tree node's subtree, as the thesis's node editor gave
-// every node its own canvas. Rendered by the CPU backend on a worker thread
-// (a thumbnail is too small to pay for a shader compile per subtree), cached
+// every node its own canvas. Compiled and rendered by the CPU backend on a
+// worker thread (a thumbnail is too small to pay for a shader compile per
+// subtree; the UI thread only copies the subtree and queues it), cached
 // by a hash of the subtree and of what lights it, paused while the user drags.
 
 #include <cstdint>

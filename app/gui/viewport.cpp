@@ -25,15 +25,16 @@ Viewport::Viewport(glcontext::GlContext& context) : context_(context), differenc
     // The one place the viewport names its backends: the GL backend builds
     // programs on a worker with a context sharing the window's.
     lanes_.reserve(kSources);
-    lanes_.emplace_back(Source::Gl, std::make_unique<gl::GlBackend>(context, context.createShared()), context.gl());
-    lanes_.emplace_back(Source::Cpu, std::make_unique<cpu::CpuBackend>(), context.gl());
+    lanes_.emplace_back(Source::Gl, std::make_unique<gl::GlBackend>(context, context.createShared()), context.gl(),
+                        compiles_);
+    lanes_.emplace_back(Source::Cpu, std::make_unique<cpu::CpuBackend>(), context.gl(), compiles_);
 }
 
 Viewport::~Viewport() = default;
 
 void Viewport::plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
                     bool interacting) {
-    scene_ = scene;
+    scene_ = std::make_shared<const scene::Scene>(scene);
     compare_ = ui.compare != ui::CompareMode::Off;
     wanted_ = ui.backend == ui::ViewBackend::Gl ? Source::Gl : Source::Cpu;
     heat_ = ui.stepHeat;
@@ -71,14 +72,20 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
     }
 
     // Whether the GL backend can render its next stage now decides whether
-    // the CPU stands in (view_choice.h: planLanes).
+    // the CPU stands in (view_choice.h: planLanes). While the GL lane's
+    // program is still compiling nothing is known yet: no stand-in for that
+    // (the CPU lane would wait for the same compile).
     Lane& gl = laneOf(Source::Gl);
-    bool glReady = true, glFailed = false;
-    if ((wanted_ == Source::Gl || compare_) && !gl.job && nextProgram(gl)) {
-        render::Readiness readiness = gl.backend->readiness(*gl.next);
-        glReady = readiness.ready;
-        glFailed = !readiness.error.empty();
-        if (glFailed) error_ = readiness.error;
+    bool glReady = true, glFailed = false, compiling = false;
+    if ((wanted_ == Source::Gl || compare_) && !gl.job) {
+        Next next = nextProgram(gl);
+        compiling = next == Next::Compiling;
+        if (next == Next::Ready) {
+            render::Readiness readiness = gl.backend->readiness(*gl.next);
+            glReady = readiness.ready;
+            glFailed = !readiness.error.empty();
+            if (glFailed) error_ = readiness.error;
+        }
     }
     lanePlan_ = planLanes(wanted_, compare_, glReady, glFailed);
     stats_.compiles = gl.backend->builds();
@@ -87,7 +94,9 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
     stats_.status.clear();
     for (Lane& lane : lanes_) advance(lane, lanePlan_.renders[static_cast<int>(lane.source)], budgetSeconds);
     if (stats_.status.empty()) {
-        if (!glReady && !glFailed) {
+        if (compiling) {
+            stats_.status = "compiling the scene";
+        } else if (!glReady && !glFailed) {
             stats_.status = "compiling shader";
         } else {
             stats_.status = error_.empty() ? "done" : "GL shader failed";
@@ -96,28 +105,43 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
     if (lanePlan_.standIn && !glReady && !glFailed) stats_.status = "compiling shader; CPU image meanwhile";
 }
 
-bool Viewport::nextProgram(Lane& lane) {
-    if (lane.next) return true;
+Viewport::Next Viewport::nextProgram(Lane& lane) {
+    if (lane.next) return Next::Ready;
     // a preview of a state the texture already shows is not worth drawing
     if (lane.stage < stages_.size() && stages_[lane.stage].preview && lane.content.state == state_) ++lane.stage;
-    if (lane.stage >= stages_.size()) return false;
+    if (lane.stage >= stages_.size()) return Next::None;
     const Stage& stage = stages_[lane.stage];
-    lane.scale = stage.preview ? previewScale(lane) : 1;
+    int scale = stage.preview ? previewScale(lane) : 1;
     program::CompileOptions options;
-    options.width = std::max(1, width_ / lane.scale);
-    options.height = std::max(1, height_ / lane.scale);
+    options.width = std::max(1, width_ / scale);
+    options.height = std::max(1, height_ / scale);
     options.aa = stage.aa;
-    lane.next = program::compileScene(scene_, options);
-    return true;
+    // asked again each frame until ready: the same key does nothing, and a
+    // new state's key supersedes the compile of an older one
+    lane.compiler->request(scene_, options, mix(mix(state_, lane.stage), static_cast<std::uint64_t>(scale)));
+    if (std::optional<program::Program> compiled = lane.compiler->take()) {
+        lane.next = std::move(*compiled);
+        lane.scale = scale;
+        return Next::Ready;
+    }
+    if (std::string failed = lane.compiler->error(); !failed.empty()) {
+        error_ = failed;
+        lane.stage = stages_.size();
+        return Next::None;
+    }
+    return Next::Compiling;
 }
 
 void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
     if (!renders) {
         lane.job.reset();  // a stand-in no longer needed: its cores go to the backend that is ready
+        lane.compiler->cancel();
         return;
     }
     if (!lane.job) {
-        if (!nextProgram(lane)) return;
+        Next next = nextProgram(lane);
+        if (next == Next::Compiling) stats_.status = std::string(sourceName(lane.source)) + ": compiling the scene";
+        if (next != Next::Ready) return;
         render::Readiness readiness = lane.backend->readiness(*lane.next);
         if (!readiness.ready) return;
         if (lane.source == Source::Gl) error_.clear();
@@ -134,7 +158,7 @@ void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
     try {
         for (const render::TileRect& tile : lane.job->advance(budgetSeconds)) {
             if (refinesInPlace(lane.content, state_)) {
-                lane.texture.upload(lane.job->frame(), tile, lane.scale, heat_, scene_.render.maxSteps);
+                lane.texture.upload(lane.job->frame(), tile, lane.scale, heat_, scene_->render.maxSteps);
             }
         }
     } catch (const std::exception& error) {
@@ -159,7 +183,7 @@ void Viewport::finishStage(Lane& lane) {
     if (!refinesInPlace(lane.content, state_)) {
         // the tiles waited: the finished image replaces one of another state at once
         lane.texture.upload(frame, {0, 0, frame.color.width, frame.color.height}, lane.scale, heat_,
-                            scene_.render.maxSteps);
+                            scene_->render.maxSteps);
     }
     lane.content = {state_, static_cast<int>(lane.stage)};
     const program::Program& done = job.program();

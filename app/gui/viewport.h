@@ -3,11 +3,14 @@
 // view, in stages (a reduced-resolution AA 1 preview, then AA 1 and the
 // scene's AA when idle; the preview alone while the user interacts), by the
 // backends behind the backend contract: the GL backend in the window's
-// context (progressive draws within a per-frame budget, programs built by a
-// worker), the CPU backend on its job queue. The decisions (which backends
-// render, which image each slot shows) are app/gui/view_choice.h's. The UI
-// thread calls update() once per frame; nothing in it waits on a render or
-// a compile.
+// context (progressive draws within a per-frame budget, shaders built by a
+// worker), the CPU backend on its job queue. Each lane's next program is
+// compiled from the scene on the viewport's compile worker
+// (ui/program_compiler.h); until it is ready the lane's last image stays,
+// marked outdated when it shows an earlier state. The decisions (which
+// backends render, which image each slot shows) are app/gui/view_choice.h's.
+// The UI thread calls update() once per frame; nothing in it waits on a
+// render or a compile.
 
 #include <cstdint>
 #include <memory>
@@ -19,8 +22,10 @@
 #include "app/gui/view_choice.h"
 #include "glcontext/gl_context.h"
 #include "image/compare.h"
+#include "jobs/job_queue.h"
 #include "render/render_backend.h"
 #include "scene/scene.h"
+#include "ui/program_compiler.h"
 #include "ui/ui_state.h"
 
 namespace sdfwb::app::gui {
@@ -77,16 +82,22 @@ private:
     };
     // One backend with its texture and its share of the current request.
     struct Lane {
-        Lane(Source source, std::unique_ptr<render::Backend> backend, const glcontext::GlFunctions& gl)
-            : source(source), backend(std::move(backend)), texture(gl) {}
+        Lane(Source source, std::unique_ptr<render::Backend> backend, const glcontext::GlFunctions& gl,
+             jobs::JobQueue& compiles)
+            : source(source),
+              backend(std::move(backend)),
+              texture(gl),
+              compiler(std::make_unique<ui::ProgramCompiler>(compiles)) {}
         Source source;
         std::unique_ptr<render::Backend> backend;
         DisplayTexture texture;
         ImageContent content;
         std::unique_ptr<render::ProgressiveRender> job;
         size_t stage = 0;                     // next stage to render (or the one rendering)
-        std::optional<program::Program> next; // the program of that stage, once made
+        std::optional<program::Program> next;  // the program of that stage, once compiled
         int scale = 1;                        // of that program: width/scale x height/scale
+        // makes `next` on the viewport's compile worker
+        std::unique_ptr<ui::ProgramCompiler> compiler;
         std::optional<image::Frame> final;    // the last stage's frame of the current state
         // Measured cost of one sample (pixel x AA sub-sample), which sizes
         // previews and, on GL, tiles so that one draw stays inside the budget.
@@ -95,9 +106,11 @@ private:
 
     void plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
               bool interacting);
+    enum class Next { None, Compiling, Ready };
     // The lane's next program (skipping a preview of a state it already
-    // shows); false when the lane has no stage left.
-    bool nextProgram(Lane& lane);
+    // shows): Ready once lane.next holds it, Compiling while it is asked
+    // for, None when the lane has no stage left (or its compile failed).
+    Next nextProgram(Lane& lane);
     void advance(Lane& lane, bool renders, double budgetSeconds);
     void finishStage(Lane& lane);
     int previewScale(const Lane& lane) const;
@@ -108,6 +121,7 @@ private:
     const Lane& laneOf(Source source) const { return lanes_[static_cast<int>(source)]; }
 
     glcontext::GlContext& context_;
+    jobs::JobQueue compiles_{1};  // the lanes' scene -> program compiles, one at a time
     std::vector<Lane> lanes_;  // indexed by Source
     DisplayTexture differenceTexture_;
     std::uint64_t differenceState_ = 0;
@@ -115,7 +129,7 @@ private:
     // The request being served.
     std::uint64_t requestKey_ = 0;
     std::uint64_t state_ = 0;  // see view_choice.h
-    scene::Scene scene_;
+    std::shared_ptr<const scene::Scene> scene_;  // shared with the compiles asked for it
     std::vector<Stage> stages_;
     int width_ = 0, height_ = 0;
     Source wanted_ = Source::Gl;
