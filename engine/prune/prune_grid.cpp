@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
 #include <deque>
 #include <mutex>
@@ -227,7 +228,10 @@ std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program,
 
 namespace {
 
-// What a grid depends on: instructions, parameters, bounds and the switch.
+// What a grid depends on: the instructions, the parameter slots they read
+// (materials, camera colours and lights are not among them: pruning decides
+// on distances alone, and a leaf reads every parameter when it runs, so a
+// colour edit keeps the grid), the bounds, what gridMargin reads and the switch.
 std::uint64_t gridKey(const program::Program& program) {
     std::uint64_t hash = program.structureKey();
     auto mix = [&](const void* data, size_t size) {
@@ -237,11 +241,16 @@ std::uint64_t gridKey(const program::Program& program) {
             hash *= 1099511628211ull;
         }
     };
-    mix(program.params.data(), program.params.size() * sizeof(glm::dvec4));
+    for (const Instruction& in : program.code) {
+        if (in.param >= 0) {
+            mix(program.params.data() + in.param, program::opcodeInfo(in.op).paramSlots * sizeof(glm::dvec4));
+        }
+    }
     mix(&program.rootMin, sizeof(program.rootMin));
     mix(&program.rootMax, sizeof(program.rootMax));
-    double ao = program.trace.aoDistance;
-    mix(&ao, sizeof(ao));
+    const double trace[3] = {program.trace.aoDistance, program.trace.epsilon, double(program.trace.shadowMode)};
+    mix(trace, sizeof(trace));
+    for (const program::LightParams& light : program.lights) mix(&light.softness, sizeof(light.softness));
     unsigned char flags[2] = {program.rootBounded, program.prune};
     mix(flags, sizeof(flags));
     return hash;
@@ -255,11 +264,15 @@ long pruneGridsBuilt() { return gridsBuilt.load(); }
 
 namespace {
 
-// The grids built last, by gridKey; and the keys a background build is on.
+// The grids built last, by gridKey; the keys a thread is building now (a
+// second caller waits for that build instead of repeating it); the keys
+// queued for a background build.
 struct GridCache {
     std::mutex mutex;
+    std::condition_variable built;
     std::deque<std::pair<std::uint64_t, std::shared_ptr<const PruneGrid>>> grids;
     std::set<std::uint64_t> building;
+    std::set<std::uint64_t> queued;
 
     std::optional<std::shared_ptr<const PruneGrid>> find(std::uint64_t key) {
         for (const auto& entry : grids) {
@@ -288,15 +301,28 @@ std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program) {
     constexpr size_t kCached = 4;
     GridCache& cache = gridCache();
     std::uint64_t key = gridKey(program);
-    {
-        std::lock_guard lock(cache.mutex);
+    std::unique_lock lock(cache.mutex);
+    while (true) {
         if (auto grid = cache.find(key)) return *grid;
+        if (cache.building.insert(key).second) break;
+        cache.built.wait(lock);
     }
-    std::shared_ptr<const PruneGrid> grid = buildPruneGrid(program);
+    lock.unlock();
+    std::shared_ptr<const PruneGrid> grid;
+    try {
+        grid = buildPruneGrid(program);
+    } catch (...) {
+        lock.lock();
+        cache.building.erase(key);
+        cache.built.notify_all();
+        throw;
+    }
     ++gridsBuilt;
-    std::lock_guard lock(cache.mutex);
+    lock.lock();
     cache.grids.emplace_front(key, grid);
     if (cache.grids.size() > kCached) cache.grids.pop_back();
+    cache.building.erase(key);
+    cache.built.notify_all();
     return grid;
 }
 
@@ -306,14 +332,14 @@ std::optional<std::shared_ptr<const PruneGrid>> pruneGridIfBuilt(const program::
     {
         std::lock_guard lock(cache.mutex);
         if (auto grid = cache.find(key)) return grid;
-        if (!cache.building.insert(key).second) return std::nullopt;
+        if (!cache.queued.insert(key).second) return std::nullopt;
     }
     auto copy = std::make_shared<program::Program>(program);
     backgroundBuilds().submit([copy, key](jobs::Job&) {
         pruneGridFor(*copy);
         GridCache& c = gridCache();
         std::lock_guard lock(c.mutex);
-        c.building.erase(key);
+        c.queued.erase(key);
     });
     return std::nullopt;
 }

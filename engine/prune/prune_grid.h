@@ -62,7 +62,9 @@ struct PruneGrid {
 
 // The grid for `program`, or null when it has none: pruning is off
 // (Program::prune), the scene's root is unbounded, or nothing can be saved.
-// Grids are cached by the program's instructions and parameters.
+// Grids are cached by what they depend on: the instructions and the
+// parameters these read (a material or light colour edit keeps the grid). A
+// caller asking for a grid another thread is building waits for that build.
 std::shared_ptr<const PruneGrid> pruneGridFor(const program::Program& program);
 
 // The cached grid (null: the program has none); nullopt while it is not

@@ -5,6 +5,7 @@
 // (docs/large-scenes.md): run niced, all in one run.
 // Run: nice build/tests/bench/large_scene_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -88,6 +89,24 @@ void BM_GridBuild(benchmark::State& state) {
     }
 }
 
+// What an edit costs the grid, each iteration a new value: a colour edit
+// finds the grid in the cache, a moved primitive builds it again
+// (range(1): 0 a material's diffuse colour, 1 a translation).
+void BM_GridAfterEdit(benchmark::State& state) {
+    program::Program p = compiled(static_cast<int>(state.range(0)), true);
+    prune::pruneGridFor(p);
+    bool colour = state.range(1) == 0;
+    auto edited = std::find_if(p.code.begin(), p.code.end(), [&](const program::Instruction& in) {
+        return colour ? in.material >= 0 : in.op == program::Opcode::Translate && in.param >= 0;
+    });
+    glm::dvec4& value = p.params[static_cast<size_t>(colour ? edited->material + 1 : edited->param)];
+    for (auto _ : state) {
+        value.x += 1.0 / 1024.0;
+        benchmark::DoNotOptimize(prune::pruneGridFor(p));
+    }
+    state.SetLabel(std::string(cases()[static_cast<size_t>(state.range(0))].name) + (colour ? " colour" : " move"));
+}
+
 glcontext::OsMesaContext& context() {
     static auto c = glcontext::OsMesaContext::create();
     return *c;
@@ -125,6 +144,11 @@ void cpuArgs(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_Cpu)->Apply(cpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_GridBuild)->DenseRange(0, 11)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_GridAfterEdit)
+    ->ArgsProduct({{1, 2, 9}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 // the straight-line shader: 10 and 100 spheres; 1001 reports the size bound's refusal
 BENCHMARK(BM_Gl)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 

@@ -1,0 +1,77 @@
+// The grid cache: what an edit rebuilds, and one build for callers at once.
+
+#include <algorithm>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cpu/cpu_renderer.h"
+#include "program/compile_scene.h"
+#include "prune/prune_grid.h"
+#include "support/large_scenes.h"
+
+namespace sdfwb {
+namespace {
+
+const program::Instruction& firstWith(const program::Program& program, bool (*wanted)(const program::Instruction&)) {
+    auto found = std::find_if(program.code.begin(), program.code.end(), wanted);
+    EXPECT_NE(found, program.code.end());
+    return *found;
+}
+
+// Pruning decides on distances and a leaf reads every parameter when it runs,
+// so a colour edit keeps the grid and the image stays the unpruned one; a
+// moved primitive builds a new grid.
+TEST(PruneGridCache, AColourEditKeepsTheGridAndAMoveBuildsANewOne) {
+    program::Program program =
+        program::compileScene(test::moleculeScene("molecule_100"), {.width = 96, .height = 54, .aa = 1});
+    std::shared_ptr<const prune::PruneGrid> grid = prune::pruneGridFor(program);
+    ASSERT_TRUE(grid);
+    image::Frame before = cpu::renderCpu(program).frame;
+
+    program::Program recoloured = program;
+    int material = firstWith(program, [](const program::Instruction& in) { return in.material >= 0; }).material;
+    glm::dvec4& diffuse = recoloured.params[static_cast<size_t>(material + 1)];
+    diffuse = glm::dvec4(0.9, 0.2, 0.1, diffuse.w);
+    long built = prune::pruneGridsBuilt();
+    EXPECT_EQ(prune::pruneGridFor(recoloured), grid);
+    EXPECT_EQ(prune::pruneGridsBuilt(), built);
+    program::Program unpruned = recoloured;
+    unpruned.prune = false;
+    image::Frame after = cpu::renderCpu(recoloured).frame, reference = cpu::renderCpu(unpruned).frame;
+    EXPECT_EQ(after.color.rgb, reference.color.rgb);
+    EXPECT_EQ(after.depth, reference.depth);
+    EXPECT_NE(after.color.rgb, before.color.rgb);  // the edit is seen
+
+    program::Program moved = program;
+    int offset = firstWith(program, [](const program::Instruction& in) {
+                     return in.op == program::Opcode::Translate && in.param >= 0;
+                 }).param;
+    moved.params[static_cast<size_t>(offset)].x += 0.01;
+    built = prune::pruneGridsBuilt();
+    EXPECT_NE(prune::pruneGridFor(moved), grid);
+    EXPECT_EQ(prune::pruneGridsBuilt(), built + 1);
+}
+
+// Tiles, the progressive viewport and the background build ask at once: the
+// callers of a grid nobody has built share one build.
+TEST(PruneGridCache, CallersAtOnceShareOneBuild) {
+    program::Program program = program::compileScene(test::cityScene(150), {.width = 24, .height = 14, .aa = 1});
+    long built = prune::pruneGridsBuilt();
+    constexpr int kCallers = 4;
+    std::vector<std::shared_ptr<const prune::PruneGrid>> grids(kCallers);
+    {
+        std::vector<std::jthread> callers;
+        for (int i = 0; i < kCallers; ++i) {
+            callers.emplace_back([&, i] { grids[static_cast<size_t>(i)] = prune::pruneGridFor(program); });
+        }
+    }
+    EXPECT_EQ(prune::pruneGridsBuilt(), built + 1);
+    ASSERT_TRUE(grids[0]);
+    for (const auto& grid : grids) EXPECT_EQ(grid, grids[0]);
+}
+
+}  // namespace
+}  // namespace sdfwb
