@@ -143,25 +143,25 @@ Value lowerNormalize(Graph& g, SourceLocation, Args args) {
 
 // GLSL constructor rules: one scalar broadcasts, one longer vector truncates,
 // otherwise the components of all arguments are concatenated and must number exactly n.
-template <int n>
+template <int N>
 Value lowerVector(Graph&, SourceLocation call, Args args) {
-  Value out{vectorType(n), {}};
-  if (args.size() == 1 && (args[0].value.type == Type::Scalar || args[0].value.size() >= n)) {
-    for (int i = 0; i < n; ++i) out.components[i] = args[0].value[i];
+  Value out{vectorType(N), {}};
+  if (args.size() == 1 && (args[0].value.type == Type::Scalar || args[0].value.size() >= N)) {
+    for (int i = 0; i < N; ++i) out.components[i] = args[0].value[i];
     return out;
   }
   int count = 0;
   for (const Argument& a : args) {
     for (int i = 0; i < a.value.size(); ++i) {
-      if (count == n) {
-        throw Error(a.where, "vec" + std::to_string(n) + " needs " + std::to_string(n) +
+      if (count == N) {
+        throw Error(a.where, "vec" + std::to_string(N) + " needs " + std::to_string(N) +
                                  " components, this argument gives too many");
       }
       out.components[count++] = a.value[i];
     }
   }
-  if (count != n) {
-    throw Error(call, "vec" + std::to_string(n) + " needs " + std::to_string(n) + " components, got " +
+  if (count != N) {
+    throw Error(call, "vec" + std::to_string(N) + " needs " + std::to_string(N) + " components, got " +
                           std::to_string(count));
   }
   return out;
