@@ -140,11 +140,11 @@ public:
     }
 
     // ---- one entry per node kind (kCompileRules) ----
-    template <ShapeCode (*code)(const Node&)>
+    template <ShapeCode (*Code)(const Node&)>
     int primitive(const Node& node, int point, dvec3 offset) {
         int p = materialize(point, offset);
         int s = allocSample();
-        ShapeCode shape = code(node);
+        ShapeCode shape = Code(node);
         emit({shape.op, s, p, -1, addParams(shape.params), materialSlot(node.text("material")), 0});
         texture(node, s, p);
         if (p != point) releasePoint();
@@ -175,21 +175,21 @@ public:
         return s;
     }
 
-    template <Opcode op>
+    template <Opcode Op>
     int hardBoolean(const Node& node, int point, dvec3 offset) {
-        return fold(node, point, offset, op, -1, 0);
+        return fold(node, point, offset, Op, -1, 0);
     }
 
-    template <Opcode op>
+    template <Opcode Op>
     int smoothBoolean(const Node& node, int point, dvec3 offset) {
-        if (node.children.empty()) return fold(node, point, offset, op, -1, 0);
+        if (node.children.empty()) return fold(node, point, offset, Op, -1, 0);
         const scene::KindSpec& spec = kindSpec(node.kind);
         const auto& choices = spec.fields[static_cast<size_t>(fieldIndex(spec, "variant"))].choices;
         int variant = static_cast<int>(std::find(choices.begin(), choices.end(), node.text("variant")) - choices.begin());
         // the first child is compiled before the parameters are added, as the slots have always been laid out
         int accumulator = compile(node.children[0], point, offset);
         int param = addParams({dvec4(node.real("k"), node.real("exponent"), 0, 0)});
-        return foldRest(node, point, offset, op, accumulator, param, variant);
+        return foldRest(node, point, offset, Op, accumulator, param, variant);
     }
 
     int translate(const Node& node, int point, dvec3 offset) {
@@ -238,14 +238,14 @@ public:
     }
 
     // Twist and bend: the point moves, and steps shrink by the Lipschitz bound over the child's bounds.
-    template <Opcode op>
+    template <Opcode Op>
     int warp(const Node& node, int point, dvec3 offset) {
         const Node& child = node.children.at(0);
         int p = materialize(point, offset);
         double k = node.real("k");
-        int r = pointOp(op, p, {dvec4(k, 0, 0, 0)});
+        int r = pointOp(Op, p, {dvec4(k, 0, 0, 0)});
         Bounds b = nodeBounds(child);
-        double radius = op == Opcode::Twist ? b.radiusAboutY() : b.radiusAboutZ();
+        double radius = Op == Opcode::Twist ? b.radiusAboutY() : b.radiusAboutZ();
         double factor = stepFactor(k, b.infinite ? INFINITY : radius);
         return finishPointOp(child, point, p, r, factor);
     }
@@ -262,10 +262,10 @@ public:
         return pointTransform<repeatInfiniteCode>(node, point, offset);
     }
 
-    template <ShapeCode (*code)(const Node&)>
+    template <ShapeCode (*Code)(const Node&)>
     int pointTransform(const Node& node, int point, dvec3 offset) {
         int p = materialize(point, offset);
-        ShapeCode transform = code(node);
+        ShapeCode transform = Code(node);
         int r = allocPoint();
         emit({transform.op, r, p, -1, addParams(transform.params), -1, 0});
         return finishPointOp(node.children.at(0), point, p, r, 1.0);

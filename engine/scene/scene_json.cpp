@@ -130,7 +130,7 @@ public:
         for (auto it = object_.begin(); it != object_.end(); ++it) {
             if (!known_.contains(it.key())) {
                 std::string list;
-                for (const std::string& k : orderedKnown_()) {
+                for (const std::string& k : orderedKnown()) {
                     list += (list.empty() ? "" : ", ") + k;
                 }
                 reader_.fail(pathOf(io::escapedExcerpt(it.key())), "unknown field (" + std::string(what) + " has: " + list + ")");
@@ -139,7 +139,7 @@ public:
     }
 
 private:
-    std::vector<std::string> orderedKnown_() const { return {known_.begin(), known_.end()}; }
+    std::vector<std::string> orderedKnown() const { return {known_.begin(), known_.end()}; }
 
     Reader& reader_;
     const json& object_;

@@ -46,21 +46,21 @@ public:
 
     // One unit of work done (a reference or a setting); `measured` when it took rendering time.
     void advance(const std::string& current, bool measured) {
-        ++progress_.settingsDone;
+        ++progress.settingsDone;
         if (measured) ++measuredUnits_;
         report(current);
     }
 
     void report(const std::string& current) {
         if (!options_.progress) return;
-        progress_.elapsedSeconds = elapsed();
-        progress_.current = current;
-        int left = progress_.settingsTotal - progress_.settingsDone;
-        progress_.secondsLeft = measuredUnits_ > 0 ? progress_.elapsedSeconds / measuredUnits_ * left : -1;
-        options_.progress(progress_);
+        progress.elapsedSeconds = elapsed();
+        progress.current = current;
+        int left = progress.settingsTotal - progress.settingsDone;
+        progress.secondsLeft = measuredUnits_ > 0 ? progress.elapsedSeconds / measuredUnits_ * left : -1;
+        options_.progress(progress);
     }
 
-    SweepProgress progress_;
+    SweepProgress progress;
 
     // Renders `setting` with every backend, `repetitions` times interleaved.
     // Nothing when cancelled.
@@ -88,6 +88,7 @@ public:
         return std::make_pair(std::move(result), std::move(first));
     }
 
+private:
     const std::vector<render::Backend*>& backends_;
     const SweepOptions& options_;
     Clock::time_point start_;
@@ -151,9 +152,9 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
     for (const SceneInput& input : scenes) {
         plans.push_back(planSweep(atMeasuredSize(input.scene, options), knobs));
         // the reference, the planned settings, and up to two tuned ones
-        sweep.progress_.settingsTotal += 3 + static_cast<int>(plans.back().settings.size());
+        sweep.progress.settingsTotal += 3 + static_cast<int>(plans.back().settings.size());
     }
-    sweep.progress_.scenesTotal = static_cast<int>(scenes.size());
+    sweep.progress.scenesTotal = static_cast<int>(scenes.size());
 
     for (size_t i = 0; i < scenes.size() && !result.cancelled; ++i) {
         const SweepPlan& plan = plans[i];
@@ -176,7 +177,7 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
             sr.skipped.push_back("reference");
             sweep.advance(sr.name + ": reference", false);
             skipRest(0);
-            ++sweep.progress_.scenesDone;
+            ++sweep.progress.scenesDone;
             continue;
         }
         sweep.report(sr.name + ": reference");
@@ -254,7 +255,7 @@ SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<Kn
         if (!result.cancelled && !sr.results.empty()) {
             storeMeasurements(options.cacheDir, measurementKey(scenes[i].scene), measurementsOf(sr, result.backends));
         }
-        ++sweep.progress_.scenesDone;
+        ++sweep.progress.scenesDone;
     }
     result.seconds = sweep.elapsed();
     return result;
