@@ -371,6 +371,23 @@ void statusBar(AppState& app, ImVec2 origin, float width, float height) {
     ImGui::End();
 }
 
+// The export dialogs' last row: progress and Cancel while the export runs,
+// else Export (`start`) and Close.
+template <typename ExportJob, typename Start>
+void exportDialogFooter(ExportJob& job, Start start) {
+    if (job.running()) {
+        ImGui::ProgressBar(static_cast<float>(job.progress()), ImVec2(360, 0));
+        if (ImGui::Button("Cancel")) job.cancel();
+        return;
+    }
+    if (ImGui::Button("Export")) start();
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) {
+        job.dialogOpen = false;
+        ImGui::CloseCurrentPopup();
+    }
+}
+
 void snapshotDialog(AppState& app) {
     SnapshotExport& snapshot = app.snapshot;
     if (snapshot.dialogOpen && !ImGui::IsPopupOpen("Export snapshot")) {
@@ -396,21 +413,11 @@ void snapshotDialog(AppState& app) {
     ImGui::EndDisabled();
     s.width = std::clamp(s.width, 1, scene::kMaxImageSize);
     s.height = std::clamp(s.height, 1, scene::kMaxImageSize);
-    if (snapshot.running()) {
-        ImGui::ProgressBar(static_cast<float>(snapshot.progress()), ImVec2(360, 0));
-        if (ImGui::Button("Cancel")) snapshot.cancel();
-    } else {
-        if (ImGui::Button("Export")) {
-            std::unique_ptr<glcontext::GlContext> shared;
-            if (s.gl) shared = app.context->createShared();
-            snapshot.start(app.editor.scene(), s, std::move(shared));
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Close")) {
-            snapshot.dialogOpen = false;
-            ImGui::CloseCurrentPopup();
-        }
-    }
+    exportDialogFooter(snapshot, [&] {
+        std::unique_ptr<glcontext::GlContext> shared;
+        if (s.gl) shared = app.context->createShared();
+        snapshot.start(app.editor.scene(), s, std::move(shared));
+    });
     ImGui::EndPopup();
 }
 
@@ -429,17 +436,7 @@ void meshExportDialog(AppState& app) {
     }
     ImGui::EndDisabled();
     s.resolution = std::clamp(s.resolution, mesh::kMinResolution, mesh::kMaxResolution);
-    if (exporter.running()) {
-        ImGui::ProgressBar(static_cast<float>(exporter.progress()), ImVec2(360, 0));
-        if (ImGui::Button("Cancel")) exporter.cancel();
-    } else {
-        if (ImGui::Button("Export")) exporter.start(app.editor.scene(), s);
-        ImGui::SameLine();
-        if (ImGui::Button("Close")) {
-            exporter.dialogOpen = false;
-            ImGui::CloseCurrentPopup();
-        }
-    }
+    exportDialogFooter(exporter, [&] { exporter.start(app.editor.scene(), s); });
     ImGui::EndPopup();
 }
 
