@@ -67,7 +67,7 @@ Mesh extractMesh(const scene::Scene& scene, int resolution, const MeshControl& c
     }
     const GridShape g = gridShape(program, resolution);
     const cpu::f32::Kernel kernel(program);
-    const float h = static_cast<float>(g.h), band = static_cast<float>(kBand * g.h);
+    const float band = static_cast<float>(kBand * g.h);
     // Lipschitz: no voxel of a block is within the band when the centre is this far
     const double skipBeyond = (std::sqrt(3.0) * 0.5 * kBlock + kBand + 1.0) * g.h;
 
