@@ -266,7 +266,7 @@ struct PendingNode {
     ObjectReader object;
     std::string path;
     const json* children = nullptr;  // the "children" member, when it is an array
-    std::string childrenPath;
+    std::string childrenPath{};
     std::size_t next = 0;  // the next child to read
 };
 
