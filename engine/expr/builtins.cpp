@@ -38,9 +38,9 @@ void requireSameType(std::string_view function, Args args) {
   }
 }
 
-template <Op op>
+template <Op Operation>
 Value lowerUnary(Graph& g, SourceLocation, Args args) {
-  return perComponent(args[0].value.type, args, [&](auto c) { return g.unary(op, c[0]); });
+  return perComponent(args[0].value.type, args, [&](auto c) { return g.unary(Operation, c[0]); });
 }
 
 Value lowerLog(Graph& g, SourceLocation, Args args) {
