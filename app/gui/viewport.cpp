@@ -116,13 +116,25 @@ Viewport::Next Viewport::nextProgram(Lane& lane) {
     options.width = std::max(1, width_ / scale);
     options.height = std::max(1, height_ / scale);
     options.aa = stage.aa;
-    // asked again each frame until ready: the same key does nothing, and a
-    // new state's key supersedes the compile of an older one
-    lane.compiler->request(scene_, options, mix(mix(state_, lane.stage), static_cast<std::uint64_t>(scale)));
-    if (std::optional<program::Program> compiled = lane.compiler->take()) {
-        lane.next = std::move(*compiled);
-        lane.scale = scale;
-        return Next::Ready;
+    // asked again each frame until ready: the same request does nothing,
+    // and a new state's supersedes the compile of an older one
+    LaneCompile wanted{state_, lane.stage, scale};
+    lane.compiler->request(scene_, options, wanted);
+    if (std::optional<ui::ProgramCompiler<LaneCompile>::Compiled> compiled = lane.compiler->take()) {
+        // during a drag each frame is a new state and its program comes a
+        // frame or more later: the freshest one compiled is drawn meanwhile
+        // as the drag's preview (chooseSlot shows it without a note while
+        // interacting, as outdated after), if it fits the texture as it is
+        const LaneCompile& made = compiled->tag;
+        const program::Program& program = compiled->program;
+        bool fits =
+            program.width == std::max(1, width_ / made.scale) && program.height == std::max(1, height_ / made.scale);
+        if (made == wanted || (interacting_ && made.state != lane.content.state && fits)) {
+            lane.next = std::move(compiled->program);
+            lane.scale = made.scale;
+            lane.nextState = made.state;
+            return Next::Ready;
+        }
     }
     if (std::string failed = lane.compiler->error(); !failed.empty()) {
         error_ = failed;
@@ -157,7 +169,7 @@ void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
     }
     try {
         for (const render::TileRect& tile : lane.job->advance(budgetSeconds)) {
-            if (refinesInPlace(lane.content, state_)) {
+            if (refinesInPlace(lane.content, lane.nextState)) {
                 lane.texture.upload(lane.job->frame(), tile, lane.scale, heat_, scene_->render.maxSteps);
             }
         }
@@ -180,12 +192,14 @@ void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
 void Viewport::finishStage(Lane& lane) {
     const render::ProgressiveRender& job = *lane.job;
     const image::Frame& frame = job.frame();
-    if (!refinesInPlace(lane.content, state_)) {
+    if (!refinesInPlace(lane.content, lane.nextState)) {
         // the tiles waited: the finished image replaces one of another state at once
         lane.texture.upload(frame, {0, 0, frame.color.width, frame.color.height}, lane.scale, heat_,
                             scene_->render.maxSteps);
     }
-    lane.content = {state_, static_cast<int>(lane.stage)};
+    lane.content = {lane.nextState, static_cast<int>(lane.stage)};
+    // an earlier state's preview drawn during a drag: the current state's stage is still to do
+    bool current = lane.nextState == state_;
     const program::Program& done = job.program();
     double samples = static_cast<double>(done.width) * done.height * done.aa * done.aa;
     double seconds = job.deviceSeconds() > 0 ? job.deviceSeconds() : job.seconds();
@@ -198,7 +212,7 @@ void Viewport::finishStage(Lane& lane) {
         stats_.gpuSeconds = job.deviceSeconds();
         stats_.frame = image::frameStats(frame);
     }
-    if (lane.stage + 1 == stages_.size()) {
+    if (current && lane.stage + 1 == stages_.size()) {
         lane.final = frame;
         const Lane& gl = laneOf(Source::Gl);
         const Lane& cpu = laneOf(Source::Cpu);
@@ -209,7 +223,7 @@ void Viewport::finishStage(Lane& lane) {
             differenceState_ = state_;
         }
     }
-    ++lane.stage;
+    if (current) ++lane.stage;
     lane.next.reset();
     lane.job.reset();
 }

@@ -80,6 +80,13 @@ private:
         bool preview = false;  // at a reduced resolution (previewScale), shown scaled up
         int aa = 1;
     };
+    // What a lane's compile is of.
+    struct LaneCompile {
+        std::uint64_t state = 0;
+        size_t stage = 0;
+        int scale = 1;
+        bool operator==(const LaneCompile&) const = default;
+    };
     // One backend with its texture and its share of the current request.
     struct Lane {
         Lane(Source source, std::unique_ptr<render::Backend> backend, const glcontext::GlFunctions& gl,
@@ -87,7 +94,7 @@ private:
             : source(source),
               backend(std::move(backend)),
               texture(gl),
-              compiler(std::make_unique<ui::ProgramCompiler>(compiles)) {}
+              compiler(std::make_unique<ui::ProgramCompiler<LaneCompile>>(compiles)) {}
         Source source;
         std::unique_ptr<render::Backend> backend;
         DisplayTexture texture;
@@ -96,8 +103,9 @@ private:
         size_t stage = 0;                     // next stage to render (or the one rendering)
         std::optional<program::Program> next;  // the program of that stage, once compiled
         int scale = 1;                        // of that program: width/scale x height/scale
+        std::uint64_t nextState = 0;          // of that program: state_, or during a drag an earlier one
         // makes `next` on the viewport's compile worker
-        std::unique_ptr<ui::ProgramCompiler> compiler;
+        std::unique_ptr<ui::ProgramCompiler<LaneCompile>> compiler;
         std::optional<image::Frame> final;    // the last stage's frame of the current state
         // Measured cost of one sample (pixel x AA sub-sample), which sizes
         // previews and, on GL, tiles so that one draw stays inside the budget.
@@ -110,6 +118,8 @@ private:
     // The lane's next program (skipping a preview of a state it already
     // shows): Ready once lane.next holds it, Compiling while it is asked
     // for, None when the lane has no stage left (or its compile failed).
+    // During a drag lane.next may be an earlier state's preview, the
+    // freshest compiled (lane.nextState says which).
     Next nextProgram(Lane& lane);
     void advance(Lane& lane, bool renders, double budgetSeconds);
     void finishStage(Lane& lane);

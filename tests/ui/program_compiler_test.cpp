@@ -1,8 +1,12 @@
 // The viewport's scene -> program compiles off the UI thread (issue 13,
-// item 2): a request returns at once, its program is the direct compile, and
-// newer requests supersede older ones still queued. No clock: the queue is
-// paused (or its worker held) while requests arrive, so what runs is known.
+// item 2): a request returns at once, its program is the direct compile,
+// newer requests drop older ones still queued, and one superseded after it
+// started is handed out until the newest is ready. No clock: the queue is
+// paused, or its worker held (by a job, or inside a compile), while requests
+// arrive, so what runs is known.
 
+#include <atomic>
+#include <cstdint>
 #include <future>
 #include <memory>
 
@@ -23,6 +27,8 @@ std::shared_ptr<const scene::Scene> defaultScene(double ballRadius = 0.8) {
 
 const program::CompileOptions kOptions{320, 180, 1};
 
+using Compiler = ProgramCompiler<std::uint64_t>;
+
 // Two programs are the same compile: the same structure, numbers and size.
 void expectSameProgram(const program::Program& a, const program::Program& b) {
     EXPECT_EQ(a.structureKey(), b.structureKey());
@@ -42,15 +48,16 @@ void drain(jobs::JobQueue& queue) {
 
 TEST(ProgramCompiler, TheProgramIsTheDirectCompileTakenOnce) {
     jobs::JobQueue queue(1);
-    ProgramCompiler compiler(queue);
+    Compiler compiler(queue);
     EXPECT_FALSE(compiler.take());
     auto scene = defaultScene();
     compiler.request(scene, kOptions, 1);
     compiler.wait();
     EXPECT_FALSE(compiler.pending());
-    std::optional<program::Program> program = compiler.take();
-    ASSERT_TRUE(program);
-    expectSameProgram(*program, program::compileScene(*scene, kOptions));
+    std::optional<Compiler::Compiled> compiled = compiler.take();
+    ASSERT_TRUE(compiled);
+    EXPECT_EQ(compiled->tag, 1u);
+    expectSameProgram(compiled->program, program::compileScene(*scene, kOptions));
     EXPECT_FALSE(compiler.take());  // moved out
     EXPECT_EQ(compiler.error(), "");
     // the same key again is the same request: nothing compiles
@@ -61,7 +68,7 @@ TEST(ProgramCompiler, TheProgramIsTheDirectCompileTakenOnce) {
 
 TEST(ProgramCompiler, RequestsWhileTheWorkerIsBusyCompileOnlyTheNewest) {
     jobs::JobQueue queue(1);
-    ProgramCompiler compiler(queue);
+    Compiler compiler(queue);
     // hold the worker, as a long compile would, while 50 edits arrive
     std::promise<void> release;
     std::shared_future<void> released = release.get_future().share();
@@ -74,14 +81,15 @@ TEST(ProgramCompiler, RequestsWhileTheWorkerIsBusyCompileOnlyTheNewest) {
     release.set_value();
     compiler.wait();
     EXPECT_EQ(compiler.compiles(), 1);  // the 49 superseded ones were dropped unrun
-    std::optional<program::Program> program = compiler.take();
-    ASSERT_TRUE(program);
-    expectSameProgram(*program, program::compileScene(*defaultScene(0.5 + 0.01 * 50), kOptions));
+    std::optional<Compiler::Compiled> compiled = compiler.take();
+    ASSERT_TRUE(compiled);
+    EXPECT_EQ(compiled->tag, 50u);
+    expectSameProgram(compiled->program, program::compileScene(*defaultScene(0.5 + 0.01 * 50), kOptions));
 }
 
 TEST(ProgramCompiler, APausedQueueRunsOneCompilePerCompilerWhateverWasAsked) {
     jobs::JobQueue queue(1);
-    ProgramCompiler gl(queue), cpu(queue);  // two lanes on one worker, as the viewport has
+    Compiler gl(queue), cpu(queue);  // two lanes on one worker, as the viewport has
     queue.setPaused(true);
     const program::CompileOptions preview{80, 45, 1}, final{320, 180, 2};
     for (int i = 1; i <= 20; ++i) {
@@ -93,15 +101,71 @@ TEST(ProgramCompiler, APausedQueueRunsOneCompilePerCompilerWhateverWasAsked) {
     cpu.wait();
     EXPECT_EQ(gl.compiles(), 1);
     EXPECT_EQ(cpu.compiles(), 1);
-    std::optional<program::Program> a = gl.take(), b = cpu.take();
+    std::optional<Compiler::Compiled> a = gl.take(), b = cpu.take();
     ASSERT_TRUE(a && b);
-    expectSameProgram(*a, program::compileScene(*defaultScene(0.7), preview));
-    expectSameProgram(*b, program::compileScene(*defaultScene(0.7), final));
+    expectSameProgram(a->program, program::compileScene(*defaultScene(0.7), preview));
+    expectSameProgram(b->program, program::compileScene(*defaultScene(0.7), final));
+}
+
+TEST(ProgramCompiler, AFinishedCompileNotYetTakenIsHandedOutAfterANewerRequest) {
+    // a drag: each frame asks for a new state before taking the last one's
+    jobs::JobQueue queue(1);
+    Compiler compiler(queue);
+    compiler.request(defaultScene(0.6), kOptions, 1);
+    compiler.wait();
+    queue.setPaused(true);  // the newer compile cannot run yet
+    compiler.request(defaultScene(0.7), kOptions, 2);
+    std::optional<Compiler::Compiled> older = compiler.take();
+    ASSERT_TRUE(older);
+    EXPECT_EQ(older->tag, 1u);
+    expectSameProgram(older->program, program::compileScene(*defaultScene(0.6), kOptions));
+    EXPECT_FALSE(compiler.take());  // taken once
+    queue.setPaused(false);
+    compiler.wait();
+    std::optional<Compiler::Compiled> newest = compiler.take();
+    ASSERT_TRUE(newest);
+    EXPECT_EQ(newest->tag, 2u);
+}
+
+TEST(ProgramCompiler, ACompileSupersededWhileRunningIsTheFreshestUntilTheNewestIsReady) {
+    // compiles that wait inside until let go, as long ones would
+    std::promise<void> started[2], release[2];
+    std::shared_future<void> released[2] = {release[0].get_future().share(), release[1].get_future().share()};
+    auto count = std::make_shared<std::atomic<int>>(0);
+    auto compile = [&, count](const scene::Scene& scene, const program::CompileOptions& options) {
+        int n = (*count)++;
+        if (n < 2) {
+            started[n].set_value();
+            released[n].wait();
+        }
+        return program::compileScene(scene, options);
+    };
+    jobs::JobQueue queue(1);
+    Compiler compiler(queue, compile);
+    compiler.request(defaultScene(0.6), kOptions, 1);
+    started[0].get_future().wait();                    // 1 runs
+    compiler.request(defaultScene(0.7), kOptions, 2);  // queued behind it
+    compiler.request(defaultScene(0.8), kOptions, 3);  // drops 2, which never ran
+    EXPECT_FALSE(compiler.take());                     // 1 is still running
+    release[0].set_value();
+    started[1].get_future().wait();  // 1 finished, 3 runs
+    std::optional<Compiler::Compiled> freshest = compiler.take();
+    ASSERT_TRUE(freshest);
+    EXPECT_EQ(freshest->tag, 1u);
+    expectSameProgram(freshest->program, program::compileScene(*defaultScene(0.6), kOptions));
+    EXPECT_FALSE(compiler.take());
+    release[1].set_value();
+    compiler.wait();
+    std::optional<Compiler::Compiled> newest = compiler.take();
+    ASSERT_TRUE(newest);
+    EXPECT_EQ(newest->tag, 3u);
+    expectSameProgram(newest->program, program::compileScene(*defaultScene(0.8), kOptions));
+    EXPECT_EQ(compiler.compiles(), 2);  // 1 and 3
 }
 
 TEST(ProgramCompiler, CancelDropsAQueuedCompile) {
     jobs::JobQueue queue(1);
-    ProgramCompiler compiler(queue);
+    Compiler compiler(queue);
     queue.setPaused(true);
     compiler.request(defaultScene(), kOptions, 1);
     compiler.cancel();
@@ -123,7 +187,7 @@ TEST(ProgramCompiler, AFailedCompileSaysWhyAndGivesNoProgram) {
     formula.set("formula", std::string("length(p) -"));  // not a formula: compileScene throws
     broken.root.children.push_back(formula);
     jobs::JobQueue queue(1);
-    ProgramCompiler compiler(queue);
+    Compiler compiler(queue);
     compiler.request(std::make_shared<const scene::Scene>(broken), kOptions, 1);
     compiler.wait();
     EXPECT_FALSE(compiler.take());
@@ -133,7 +197,7 @@ TEST(ProgramCompiler, AFailedCompileSaysWhyAndGivesNoProgram) {
 TEST(ProgramCompiler, DestroyedWithACompileQueuedOrRunning) {
     jobs::JobQueue queue(1);
     {
-        ProgramCompiler compiler(queue);
+        Compiler compiler(queue);
         compiler.request(defaultScene(), kOptions, 1);
         compiler.request(defaultScene(0.6), kOptions, 2);
     }  // the job writes into its own result, which outlives the compiler
