@@ -18,9 +18,7 @@ constexpr int kFieldSamples = 5;  // per axis, corners included, when unbounded 
 program::Bounds mapped(const Affine& world, const program::Bounds& local) {
     program::Bounds out;
     for (int corner = 0; corner < 8; ++corner) {
-        glm::dvec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                     (corner & 4) ? local.max.z : local.min.z);
-        glm::dvec3 q = world.apply(p);
+        glm::dvec3 q = world.apply(local.corner(corner));
         out = out.merged(program::Bounds::box(q, q));
     }
     return out;

@@ -40,8 +40,7 @@ std::optional<ImageRect> outlineRect(const scene::Scene& scene, const NodePath& 
     if (b.empty || b.infinite) return std::nullopt;
     std::optional<ImageRect> rect;
     for (int corner = 0; corner < 8; ++corner) {
-        glm::dvec3 p(corner & 1 ? b.max.x : b.min.x, corner & 2 ? b.max.y : b.min.y, corner & 4 ? b.max.z : b.min.z);
-        std::optional<glm::dvec2> at = projectToView(scene, p, width, height);
+        std::optional<glm::dvec2> at = projectToView(scene, b.corner(corner), width, height);
         if (!at) return std::nullopt;  // around the eye: no honest rectangle
         if (!rect) rect = ImageRect{*at, *at};
         rect->min = glm::min(rect->min, *at);

@@ -53,8 +53,7 @@ Bounds rotated(const Bounds& b, const glm::dmat3& rotation) {
     if (b.empty || b.infinite) return b;
     Bounds result;
     for (int corner = 0; corner < 8; ++corner) {
-        dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y, (corner & 4) ? b.max.z : b.min.z);
-        dvec3 q = rotation * p;
+        dvec3 q = rotation * b.corner(corner);
         result = result.merged(Bounds::box(q, q));
     }
     return result;

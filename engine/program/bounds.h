@@ -19,6 +19,10 @@ struct Bounds {
     Bounds merged(const Bounds& other) const;
     Bounds intersected(const Bounds& other) const;
     Bounds expanded(double amount) const;
+    // Corner `index` (0..7): bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+    glm::dvec3 corner(int index) const {
+        return {(index & 1) ? max.x : min.x, (index & 2) ? max.y : min.y, (index & 4) ? max.z : min.z};
+    }
     // Largest distance from the y axis (twist) or z axis (bend) of any bounded point.
     double radiusAboutY() const;
     double radiusAboutZ() const;
