@@ -3,20 +3,12 @@
 
 #include <string>
 
-#include <CLI/CLI.hpp>
+#include "app/compare_arguments.h"
 
 #include "image/compare.h"
 
 namespace sdfwb::app {
 
-struct CompareArguments {
-    std::string first;
-    std::string second;
-    std::string diff;
-    image::ParityThresholds thresholds = image::kParityThresholds;
-};
-
-CLI::App* addCompareCommand(CLI::App& app, CompareArguments& arguments);
 // 0 when the thresholds hold, 1 when they do not, 2 on an error.
 int runCompare(const CompareArguments& arguments);
 

@@ -22,15 +22,6 @@ bool isHardCase(const std::filesystem::path& file) {
 
 }  // namespace
 
-CLI::App* addParityCommand(CLI::App& app, ParityArguments& a) {
-    CLI::App* parity = app.add_subcommand("parity", "Render scenes with both backends and report how far they differ");
-    parity->add_option("scenes", a.paths, "Scene files or folders (default: scenes)");
-    parity->add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    parity->add_option("--aa", a.aa, "Antialiasing level 1-" + std::to_string(scene::kMaxAa))->check(CLI::Range(1, scene::kMaxAa))->capture_default_str();
-    parity->add_option("--report", a.report, "Also write the table as Markdown to this file");
-    return parity;
-}
-
 int runParity(const ParityArguments& a) {
     return runReportingErrors("parity", [&] {
         auto [width, height] = parseSizeArgument(a.size);

@@ -94,13 +94,6 @@ void reduceFractions(Fractions& f) {
   }
 }
 
-constexpr EliminationOrderName kEliminationOrders[] = {
-    {EliminationOrder::BlockDegrevlex, "elimination",
-     "parameters > x, y, z; each block by degrevlex (fastest)"},
-    {EliminationOrder::BlockDeglex, "elimination-deglex", "parameters (degrevlex) > x, y, z by deglex"},
-    {EliminationOrder::BlockLex, "elimination-lex", "parameters (degrevlex) > x, y, z by lex"},
-    {EliminationOrder::Lex, "lex", "lex over parameters > x > y > z (the textbook's; slowest)"},
-};
 
 // The lex basis of the whole ideal, of which the elements free of the
 // eliminated variables are the lex basis of the elimination ideal.
@@ -149,15 +142,6 @@ EliminationProblem implicitizationIdeal(const RationalParametrization& p, Denomi
   if (!q.isConstant()) generators.push_back(1 - q.inRing(ring) * ring->var(eliminated.front()));
   for (const Polynomial& r : f.relations) generators.push_back(r.inRing(ring));
   return EliminationProblem{Ideal(ring, generators), eliminated};
-}
-
-std::span<const EliminationOrderName> eliminationOrders() { return kEliminationOrders; }
-
-std::optional<EliminationOrder> eliminationOrderFromName(std::string_view name) {
-  for (const EliminationOrderName& entry : kEliminationOrders) {
-    if (entry.name == name) return entry.order;
-  }
-  return std::nullopt;
 }
 
 MonomialOrder coordinateOrder(EliminationOrder order) {

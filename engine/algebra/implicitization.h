@@ -12,6 +12,7 @@
 // The auxiliary y gets an internal name no user identifier can spell
 // (internalVariableName), so it never collides with a parameter.
 
+#include "algebra/elimination_order.h"
 #include "algebra/groebner.h"
 
 #include <cstdint>
@@ -44,32 +45,6 @@ enum class DenominatorStrategy {
   Product,  // q = product of the denominators as given (for comparison only)
 };
 
-/// The monomial order of the elimination. Each is an elimination order (a
-/// monomial with a parameter is larger than any monomial in the coordinates
-/// alone), so each gives the same elimination ideal; the order on the
-/// coordinates decides which reduced basis describes it when it needs several
-/// generators (a curve), and the computation differs.
-enum class EliminationOrder {
-  /// Parameters in a degrevlex block above the coordinates, ordered by
-  /// degrevlex: the fastest (the default).
-  BlockDegrevlex,
-  BlockDeglex,  // the coordinates by deglex
-  BlockLex,     // the coordinates by lex
-  /// Pure lex over the parameters, then the coordinates: Theorem 1.7 as the
-  /// textbook states it. The whole ideal's lex basis is computed modulo
-  /// primes (only its elimination part is lifted to Q), so this is the
-  /// slowest; it never interpolates; its result equals BlockLex's.
-  Lex,
-};
-
-struct EliminationOrderName {
-  EliminationOrder order;
-  std::string_view name;         // what --order takes: "elimination", "lex", ...
-  std::string_view description;  // one line for menus and --help
-};
-/// Every choice, the default first.
-std::span<const EliminationOrderName> eliminationOrders();
-std::optional<EliminationOrder> eliminationOrderFromName(std::string_view name);
 /// The order of the coordinates under `order` (degrevlex, deglex or lex).
 MonomialOrder coordinateOrder(EliminationOrder order);
 

@@ -20,7 +20,11 @@ int statusOf(int status) { return WIFSIGNALED(status) ? 128 + WTERMSIG(status) :
 }  // namespace
 
 ProcessResult run(const std::string& arguments, const std::string& prefix) {
-    std::string command = prefix + " " + std::string(SDFWB_EXECUTABLE) + " " + arguments + " 2>&1";
+    return runProgram(SDFWB_EXECUTABLE, arguments, prefix);
+}
+
+ProcessResult runProgram(const std::string& program, const std::string& arguments, const std::string& prefix) {
+    std::string command = prefix + " " + program + " " + arguments + " 2>&1";
     std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
     std::string output;
     std::array<char, 4096> buffer{};

@@ -21,6 +21,8 @@ struct ProcessResult {
 // `arguments` after the executable, through /bin/sh; `prefix` runs before it
 // in the same shell (e.g. "ulimit -f 16;").
 ProcessResult run(const std::string& arguments, const std::string& prefix = "");
+// The same for another program (a module executable next to it).
+ProcessResult runProgram(const std::string& program, const std::string& arguments, const std::string& prefix = "");
 
 // Starts the executable with `arguments` (no shell), output discarded.
 pid_t start(const std::vector<std::string>& arguments);
