@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "scene/node_kinds.h"
+#include "ui/panels.h"
 #include "ui/placement.h"
 #include "ui/transform_handles.h"
 #include "ui/view_camera.h"
@@ -166,6 +167,11 @@ std::vector<ScriptCommand> parseScript(std::string_view text, const std::string&
     return commands;
 }
 
+ScriptStatus ScriptRunner::refuse(const ScriptCommand& command, UiState& ui, const Problems& problems) {
+    if (command.expectFailure) reportProblems(ui, problems);
+    return fail(command, joined(problems));
+}
+
 ScriptRunner::ScriptRunner(std::vector<ScriptCommand> commands, std::string source)
     : commands_(std::move(commands)), source_(std::move(source)) {}
 
@@ -215,7 +221,7 @@ ScriptStatus ScriptRunner::step(Editor& editor, UiState& ui, ScriptHost& host) {
 ScriptStatus ScriptRunner::run(const ScriptCommand& c, Editor& editor, UiState& ui, ScriptHost& host) {
     const std::vector<std::string>& a = c.args;
     auto done = [&](const Problems& problems = {}) {
-        if (!problems.empty()) return fail(c, joined(problems));
+        if (!problems.empty()) return refuse(c, ui, problems);
         ++next_;
         return ScriptStatus::Finished;
     };
@@ -422,7 +428,7 @@ ScriptStatus ScriptRunner::runPolynomial(const ScriptCommand& c, Editor& editor,
     PolynomialPanelState& panel = host.polynomialPanel();
     const std::vector<std::string>& a = c.args;
     auto done = [&](const Problems& problems = {}) {
-        if (!problems.empty()) return fail(c, joined(problems));
+        if (!problems.empty()) return refuse(c, ui, problems);
         ++next_;
         return ScriptStatus::Finished;
     };

@@ -74,6 +74,10 @@ public:
 
 private:
     ScriptStatus fail(const ScriptCommand& command, const std::string& reason);
+    // An edit the editor refused. When the script expects that, the problems
+    // are first reported as the panels report them, so they reach the status
+    // bar and the Problems list (ui/problems.h) as a user's would.
+    ScriptStatus refuse(const ScriptCommand& command, UiState& ui, const Problems& problems);
     ScriptStatus run(const ScriptCommand& command, Editor& editor, UiState& ui, ScriptHost& host);
     bool waitIdle(const ScriptCommand& command, ScriptHost& host);
     ScriptStatus runPolynomial(const ScriptCommand& command, Editor& editor, UiState& ui, ScriptHost& host);

@@ -7,6 +7,7 @@
 
 #include "scene/scene_json.h"
 #include "support/source_tree.h"
+#include "ui/problems.h"
 #include "ui/script.h"
 #include "ui/view_camera.h"
 
@@ -111,6 +112,18 @@ TEST(ScriptRunTest, InvalidValueStopsWithTheLineAndLoaderMessage) {
     EXPECT_EQ(run.status, ScriptStatus::Failed);
     EXPECT_EQ(run.error, "test.txt:2: set: root.children[0].children[0].radius: must be > 0 (got -1)");
     EXPECT_FALSE(run.host.quitCalled);
+}
+
+TEST(ScriptRunTest, AnExpectedRefusalReachesTheProblemsListUntilTheValueIsFixed) {
+    ScriptRun run("select root.children[0].children[0]\nfails set radius -1\n");
+    ASSERT_EQ(run.status, ScriptStatus::Finished) << run.error;
+    updateProblems(run.ui, run.editor);
+    std::vector<const Message*> open = openErrors(run.ui);
+    ASSERT_EQ(open.size(), 1u);
+    EXPECT_EQ(open[0]->text, "root.children[0].children[0].radius: must be > 0 (got -1)");
+    EXPECT_TRUE(run.editor.setField({0, 0}, "radius", 0.5).empty());
+    updateProblems(run.ui, run.editor);
+    EXPECT_TRUE(openErrors(run.ui).empty());
 }
 
 TEST(ScriptRunTest, BadPathAndMissingSelection) {
