@@ -4,6 +4,11 @@ namespace sdfwb::app::gui {
 
 bool refinesInPlace(const ImageContent& texture, std::uint64_t state) { return texture.state == state; }
 
+bool drawsCompiled(bool asked, std::uint64_t compiledState, std::uint64_t shownState, bool interacting,
+                   bool fitsTexture) {
+    return asked || (interacting && compiledState != shownState && fitsTexture);
+}
+
 SlotView chooseSlot(Source wanted, const ImageContent (&textures)[kSources], std::uint64_t state, bool interacting) {
     const Source other = wanted == Source::Gl ? Source::Cpu : Source::Gl;
     const ImageContent& mine = textures[static_cast<int>(wanted)];

@@ -27,6 +27,15 @@ struct ImageContent {
 // and the finished stage replaces the image at once.
 bool refinesInPlace(const ImageContent& texture, std::uint64_t state);
 
+// Whether a lane draws a program just compiled: the one it asked for; or,
+// during a drag, where each frame asks for a new state and its program comes
+// a frame or more later, the freshest compiled for another state than the
+// texture shows, as the drag's preview, when its image still fits the
+// texture (the view was not resized meanwhile). After the drag a late
+// program of an older state is not drawn.
+bool drawsCompiled(bool asked, std::uint64_t compiledState, std::uint64_t shownState, bool interacting,
+                   bool fitsTexture);
+
 // What a view slot draws and what it must say about it.
 struct SlotView {
     Source shown = Source::Gl;

@@ -121,15 +121,12 @@ Viewport::Next Viewport::nextProgram(Lane& lane) {
     LaneCompile wanted{state_, lane.stage, scale};
     lane.compiler->request(scene_, options, wanted);
     if (std::optional<ui::ProgramCompiler<LaneCompile>::Compiled> compiled = lane.compiler->take()) {
-        // during a drag each frame is a new state and its program comes a
-        // frame or more later: the freshest one compiled is drawn meanwhile
-        // as the drag's preview (chooseSlot shows it without a note while
-        // interacting, as outdated after), if it fits the texture as it is
+        // chooseSlot shows a drag's preview without a note while interacting, as outdated after
         const LaneCompile& made = compiled->tag;
         const program::Program& program = compiled->program;
         bool fits =
             program.width == std::max(1, width_ / made.scale) && program.height == std::max(1, height_ / made.scale);
-        if (made == wanted || (interacting_ && made.state != lane.content.state && fits)) {
+        if (drawsCompiled(made == wanted, made.state, lane.content.state, interacting_, fits)) {
             lane.next = std::move(compiled->program);
             lane.scale = made.scale;
             lane.nextState = made.state;

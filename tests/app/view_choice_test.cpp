@@ -40,6 +40,17 @@ TEST(ViewChoice, AnEarlierStateIsMarkedOutdatedUnlessTheUserDrags) {
     EXPECT_EQ(v.note, Note::Outdated);
 }
 
+TEST(ViewChoice, ADragDrawsTheFreshestCompiledStateAsItsPreview) {
+    constexpr std::uint64_t kDragged = 9;  // a state compiled while the drag asks for newer ones
+    EXPECT_TRUE(drawsCompiled(true, kNow, kOld, false, true));  // what the lane asked for
+    EXPECT_TRUE(drawsCompiled(false, kDragged, kOld, true, true));
+    // nothing newer than the texture holds, or an image the resized view no longer fits
+    EXPECT_FALSE(drawsCompiled(false, kOld, kOld, true, true));
+    EXPECT_FALSE(drawsCompiled(false, kDragged, kOld, true, false));
+    // the drag is over: a late program of an older state waits for the current one
+    EXPECT_FALSE(drawsCompiled(false, kDragged, kOld, false, true));
+}
+
 TEST(ViewChoice, NothingRenderedYetIsSaid) {
     EXPECT_EQ(choose(Source::Gl, {}, {}).note, Note::Empty);
 }
