@@ -1,4 +1,5 @@
-// Every shipped scene renders on the CPU backend without NaN or infinite pixels.
+// Every shipped scene renders on the CPU backend without NaN or infinite pixels,
+// and one without mirrors or glass renders as it would through the ray tree.
 
 #include <cmath>
 
@@ -6,8 +7,8 @@
 
 #include "cpu/cpu_renderer.h"
 #include "program/compile_scene.h"
-#include "support/scene_files.h"
 #include "scene/scene_json.h"
+#include "support/scene_files.h"
 
 namespace sdfwb {
 namespace {
@@ -22,6 +23,20 @@ TEST_P(EveryScene, RendersFinitePixels) {
     size_t nonFinite = 0;
     for (float v : outcome.frame.color.rgb) nonFinite += std::isfinite(v) ? 0 : 1;
     EXPECT_EQ(nonFinite, 0u);
+}
+
+// With k_ps = k_t = 0 everywhere (or max_depth 0) a scene compiles no ray
+// tree; the tree's code forced on must change no bit of what it renders.
+TEST_P(EveryScene, WithoutMirrorsOrGlassRendersAsThroughTheRayTree) {
+    scene::Scene s = scene::loadSceneFile(GetParam().path());
+    program::Program p = program::compileScene(s, {.width = 32, .height = 18, .aa = 1});
+    if (p.secondaryRays) return;  // a scene with mirrors or glass: the tree is its own
+    program::Program tree = p;
+    tree.secondaryRays = true;
+    render::RenderOutcome without = cpu::renderCpu(p), with = cpu::renderCpu(tree);
+    EXPECT_EQ(without.frame.color.rgb, with.frame.color.rgb);
+    EXPECT_EQ(without.frame.steps, with.frame.steps);
+    EXPECT_EQ(without.frame.evaluations, with.frame.evaluations);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::allSceneFiles()),

@@ -114,7 +114,8 @@ vec3 traceOne(std::function<Sample(vec3)> field, vec3 eye, vec3 direction, int m
                            .background = vec3(0),
                            .maxDepth = maxDepth,
                            .rayWeightCutoff = 1e-3};
-    for (int i = 0; i < TRACE_SLOTS; ++i) driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
+    for (int i = 0; i < TRACE_SLOTS; ++i)
+        driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
     vec3 forward = normalize3(direction);
     vec3 right = normalize3(cross3(forward, std::abs(forward.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
     Camera camera{eye, forward, right, cross3(right, forward), 0.5};
@@ -157,13 +158,13 @@ TEST(RayTreeSamples, AGlassWallBeyondTheCriticalAngleReflectsTotally) {
     double a = 60 * M_PI / 180;
     vec3 eye(0, 2.5, 0), d(std::sin(a), -std::cos(a), 0);
     double inside = std::asin(std::sin(a) / kIor);
-    double entry = 0.5 * std::tan(a);                  // x where the ray enters the top face, y = 2
-    double toWall = (1 - entry) / std::tan(inside);    // depth below the top where it meets the wall
+    double entry = 0.5 * std::tan(a);                // x where the ray enters the top face, y = 2
+    double toWall = (1 - entry) / std::tan(inside);  // depth below the top where it meets the wall
     ASSERT_LT(toWall, 2);
-    double down = 2 - toWall;                           // depth left to the bottom after the wall
-    double bottomX = 1 - down * std::tan(inside);       // mirrored by the wall
+    double down = 2 - toWall;                      // depth left to the bottom after the wall
+    double bottomX = 1 - down * std::tan(inside);  // mirrored by the wall
     ASSERT_GT(bottomX, -1);
-    double landing = bottomX - 1 * std::tan(a);         // out parallel to the entry, mirrored, 1 unit to y = -1
+    double landing = bottomX - 1 * std::tan(a);  // out parallel to the entry, mirrored, 1 unit to y = -1
     vec3 c = traceOne(column, eye, d, 6);
     EXPECT_NEAR(c.x, landing, 1e-4);
     EXPECT_NEAR(c.z, 1, 1e-12) << "total internal reflection lost weight";
@@ -193,6 +194,66 @@ TEST(RayTreeSamples, AMirrorAddsKpsMpsTimesWhatItSees) {
     EXPECT_NEAR(c.x, 0.1 + 0.5 * 1 * 4, 1e-4);
     EXPECT_NEAR(c.y, 0.1 + 0.5 * 0.5 * 0, 1e-4);
     EXPECT_NEAR(c.z, 0.1 + 0.5 * 0.25 * 1, 1e-9);
+}
+
+// A white floor lit from straight above through a box 1 <= y <= 1.5 over the
+// origin, seen from the side below the box: in every shadow mode the lit
+// floor under the box shows what the box lets through, k_t M_T per channel
+// (the documented simplification), or 0 when the box is opaque.
+vec3 floorUnderBox(Material box, int shadowMode) {
+    auto field = [box](vec3 p) {
+        Material floor = noMaterial();
+        floor.diffuse = vec3(1);
+        double cube = std::max(std::max(std::abs(p.x), std::abs(p.z)) - 0.5, std::abs(p.y - 1.25) - 0.25);
+        return cube < p.y ? shapeSample(cube, box) : shapeSample(p.y, floor);
+    };
+    AnalyticDriver driver{std::vector<vec4>(static_cast<size_t>(MATERIAL_SLOT), vec4(0)), field};
+    TraceSettings settings{.maxSteps = 2000,
+                           .maxDistance = 100,
+                           .epsilon = 1e-6,
+                           .epsilonPerDistance = 0,
+                           .shadowMode = shadowMode,
+                           .shadowSteps = 500,
+                           .aoSamples = 0,
+                           .aoDistance = 1,
+                           .lightingModel = LIGHTING_BLINN_PHONG,
+                           .relaxation = 1,
+                           .lightCount = 1,
+                           .exposure = 1,
+                           .ambientLight = vec3(0),
+                           .background = vec3(0),
+                           .maxDepth = 4,
+                           .rayWeightCutoff = 1e-3};
+    for (int i = 0; i < TRACE_SLOTS; ++i)
+        driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
+    Light overhead{vec3(0, 1, 0), vec3(1), 8};
+    for (int i = 0; i < LIGHT_SLOTS; ++i) driver.params[static_cast<size_t>(LIGHT_SLOT + i)] = lightSlot(overhead, i);
+    vec3 eye(3, 0.5, 0);
+    vec3 forward = normalize3(-eye);
+    vec3 right = normalize3(cross3(forward, vec3(0, 1, 0)));
+    Camera camera{eye, forward, right, cross3(right, forward), 0.5};
+    for (int i = 0; i < CAMERA_SLOTS; ++i) driver.params[static_cast<size_t>(CAMERA_SLOT + i)] = cameraSlot(camera, i);
+    TraceState s = driver.traceSample(5, 5, 10, 10);
+    EXPECT_TRUE(s.hit);
+    EXPECT_NEAR(s.t, length3(eye), 1e-4);  // the floor at the origin, under the box
+    return s.color;
+}
+
+TEST(RayTreeShadows, ATransparentOccluderLetsKtMtThroughInEveryShadowMode) {
+    Material glass = glassMaterial();
+    glass.transparency = 0.8;
+    glass.transmissionColor = vec3(1, 0.5, 0.25);
+    Material opaque = noMaterial();
+    for (int mode : {SHADOW_HARD, SHADOW_SOFT, SHADOW_IMPROVED}) {
+        vec3 through = floorUnderBox(glass, mode);
+        EXPECT_NEAR(through.x, 0.8, 1e-6) << mode;
+        EXPECT_NEAR(through.y, 0.4, 1e-6) << mode;
+        EXPECT_NEAR(through.z, 0.2, 1e-6) << mode;
+        vec3 blocked = floorUnderBox(opaque, mode);
+        EXPECT_EQ(blocked, vec3(0)) << mode << ": no transparent occluder shadows more than an opaque one";
+    }
+    vec3 open = floorUnderBox(glass, SHADOW_NONE);
+    EXPECT_NEAR(open.x, 1, 1e-6);
 }
 
 TEST(RayTreeBound, IsTheTracersBoundPerRayOfTheFullTreeUnderTheCap) {

@@ -47,6 +47,7 @@ struct TraceState {
     real shadowResult;
     real shadowBudget;  // shadow steps spent, each weighted by how fast the field lets the ray advance
     real shadowLastStep; // the shadow ray's previous step (0 before the first)
+    vec3 shadowThrough; // improved shadows: what the transparent occluders met let through
     vec3 color;
     int depth;          // bounces before this ray: 0 for a primary ray (ray_tree.glsl)
     bool inside;        // the ray travels inside a solid: it marches on the negated field
@@ -59,8 +60,8 @@ SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLen
     Material none = noMaterial();
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
-                      real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(0)), depth,
-                      inside, pathLength, real(0));
+                      real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(1)),
+                      vec3(real(0)), depth, inside, pathLength, real(0));
 }
 
 SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, real(0)); }
@@ -157,6 +158,7 @@ SHARED_FN TraceState beginLight(TraceState s, TraceSettings settings) {
     s.shadowResult = real(1);
     s.shadowBudget = real(0);
     s.shadowLastStep = real(0);
+    s.shadowThrough = vec3(real(1));
     s.lastDistance = real(0);
     s.counter = 0;
     if (s.light >= settings.lightCount) {
@@ -443,8 +445,10 @@ SHARED_FN real penumbraEstimate(TraceState s, real h, real k) {
 
 // What a shadow ray blocked by a surface of material m lets through: k_t M_T,
 // at most 1 per channel (a simplification: the light is not refracted, the
-// occluder is not marched through, what lies behind it is not seen; an opaque
-// occluder lets 0 through, so no transparent one shadows more).
+// occluder is not marched through (improved shadows march on through it, but
+// take the least of what each transparent occluder lets through, not their
+// product), what lies behind it is not seen; an opaque occluder lets 0
+// through, so no transparent one shadows more).
 SHARED_FN vec3 occluderTransmission(Material m) {
     vec3 through = m.transmissionColor * m.transparency;
     return vec3(saturate(through.x), saturate(through.y), saturate(through.z));
@@ -471,13 +475,20 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
     s.shadowBudget = s.shadowBudget + pace;
     bool exhausted = s.shadowBudget >= real(settings.shadowSteps) || s.counter >= SHADOW_SAMPLE_CAP;
     if (settings.shadowMode == SHADOW_IMPROVED) {
-        if (s.shadowT > real(0)) {
+        if (field.material.transparency > real(0)) {
+            // a transparent occluder does not enter the penumbra estimate
+            // (it has no penumbra here): within epsilon of it or inside,
+            // the light is tinted by what it lets through, k_t M_T
+            if (d < s.hitEpsilon) {
+                s.shadowThrough = min(s.shadowThrough, occluderTransmission(field.material));
+            }
+        } else if (s.shadowT > real(0)) {
             s.shadowResult = min(s.shadowResult, light.softness * d / s.shadowT);
         }
         s.shadowT = s.shadowT + max(abs(field.step), s.hitEpsilon);
         if (s.shadowResult < real(-1) || s.shadowT > settings.maxDistance || exhausted) {
             real clamped = max(s.shadowResult, real(-1));
-            return finishLight(s, light, settings, vec3(smoothstepr(real(-1), real(1), clamped)));
+            return finishLight(s, light, settings, s.shadowThrough * smoothstepr(real(-1), real(1), clamped));
         }
         return s;
     }
