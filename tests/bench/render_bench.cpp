@@ -100,6 +100,14 @@ BENCHMARK_CAPTURE(rayTreeCost, glass_cpu, "tutorial/09_glass.json", false)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK_CAPTURE(rayTreeCost, glass_gl, "tutorial/09_glass.json", true)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, showcase_cpu, "showcase/glass_and_chrome.json", false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, showcase_gl, "showcase/glass_and_chrome.json", true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, improved_shadows_cpu, "hard/improved_shadow_through_glass.json", false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(rayTreeCost, improved_shadows_gl, "hard/improved_shadow_through_glass.json", true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 // What the ground's footprint filter costs: scenes/default.json at 480x270
 // AA 1 as compiled (range 1) and with the ground's footprint per distance set

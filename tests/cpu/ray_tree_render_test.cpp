@@ -75,5 +75,31 @@ TEST(RayTreeRender, OnlyReflectingOrTransmittingMaterialsWithADepthMakeATree) {
     EXPECT_FALSE(program::compileScene(s).secondaryRays);
 }
 
+// Once a scene has its tree, the new fields are parameters: editing them
+// (but for turning the last mirror or glass off) keeps the structure, so the
+// GL backend builds no new shader.
+TEST(RayTreeRender, MirrorAndGlassEditsAreParameterEdits) {
+    scene::Scene s;
+    scene::Material m;
+    m.name = "m";
+    m.reflectivity = 0.25;
+    s.materials.push_back(m);
+    std::uint64_t key = program::compileScene(s).structureKey();
+    scene::Material& e = s.materials[0];
+    e.reflectivity = 0.9;
+    e.reflectionColor = {0.2, 0.4, 0.6};
+    e.transparency = 0.7;
+    e.transmissionColor = {0.9, 0.8, 0.7};
+    e.ior = 1.33;
+    e.fresnel = true;
+    s.render.maxDepth = 6;
+    s.render.rayWeightCutoff = 0.1;
+    program::Program edited = program::compileScene(s);
+    EXPECT_TRUE(edited.secondaryRays);
+    EXPECT_EQ(edited.structureKey(), key);
+    e.reflectivity = e.transparency = 0;
+    EXPECT_NE(program::compileScene(s).structureKey(), key);  // no tree left to compile
+}
+
 }  // namespace
 }  // namespace sdfwb

@@ -191,7 +191,14 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
                            .specular = glm::dvec3(0.5),
                            .shininess = shininess,
                            .emission = glm::dvec3(emission),
-                           .emissionStrength = 1.5};
+                           .emissionStrength = 1.5,
+                           // every member differs between materials, so blends mix each of them
+                           .reflectivity = shininess / 128,
+                           .reflectionColor = color * 0.5,
+                           .transparency = 1 - shininess / 64,
+                           .transmissionColor = glm::dvec3(1) - color,
+                           .ior = 1 + shininess / 64,
+                           .fresnel = emission > 0 ? 1.0 : 0.0};
         int slot = static_cast<int>(p.params.size());
         for (int i = 0; i < shared::MATERIAL_SLOTS; ++i) p.params.push_back(shared::materialSlot(m, i));
         return slot;
