@@ -2,7 +2,7 @@
 
 #include <charconv>
 #include <cmath>
-#include <sstream>
+#include <algorithm>
 #include <stdexcept>
 #include <tuple>
 
@@ -66,17 +66,26 @@ const CommandSpec* findCommand(std::string_view name) {
     return nullptr;
 }
 
+// The blanks between words, and around a line: one set for both, so a line
+// that trims to something always has a first word (a lone vertical tab was
+// kept by the trim and then split into no words at all).
+constexpr std::string_view kBlanks = " \t\r\v\f";
+
 std::vector<std::string> words(std::string_view text) {
     std::vector<std::string> out;
-    std::istringstream in{std::string(text)};
-    for (std::string word; in >> word;) out.push_back(word);
+    for (size_t begin = text.find_first_not_of(kBlanks); begin != std::string_view::npos;
+         begin = text.find_first_not_of(kBlanks, begin)) {
+        size_t end = std::min(text.find_first_of(kBlanks, begin), text.size());
+        out.emplace_back(text.substr(begin, end - begin));
+        begin = end;
+    }
     return out;
 }
 
 std::string_view trim(std::string_view s) {
-    size_t begin = s.find_first_not_of(" \t\r");
+    size_t begin = s.find_first_not_of(kBlanks);
     if (begin == std::string_view::npos) return {};
-    size_t end = s.find_last_not_of(" \t\r");
+    size_t end = s.find_last_not_of(kBlanks);
     return s.substr(begin, end - begin + 1);
 }
 

@@ -75,6 +75,15 @@ TEST(ScriptParseTest, WrongArgumentCountNamesTheLineAndUsage) {
     }
 }
 
+TEST(ScriptParseTest, LinesOfOtherBlanksAreBlankAndBlanksSeparateWords) {
+    // a lone vertical tab used to trim to itself and split into no words (fuzz_script)
+    EXPECT_TRUE(parseScript("\v\n\f \t\n", "test.txt").empty());
+    std::vector<ScriptCommand> commands = parseScript("select\vroot\n", "test.txt");
+    ASSERT_EQ(commands.size(), 1u);
+    EXPECT_EQ(commands[0].name, "select");
+    EXPECT_EQ(commands[0].args, std::vector<std::string>{"root"});
+}
+
 TEST(ScriptParseTest, SetKeepsTheWholeValue) {
     auto commands = parseScript("set half_extents 1 2 3\n", "s");
     ASSERT_EQ(commands.size(), 1u);
