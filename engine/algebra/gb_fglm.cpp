@@ -1,5 +1,6 @@
 #include "algebra/gb_fglm.h"
 
+#include "algebra/gb_convert.h"
 #include "algebra/gb_engine.h"
 
 #include <algorithm>
@@ -96,9 +97,14 @@ std::optional<MultiplicationTable> multiplicationTable(const Layout& source, con
   const std::size_t dim = table.dim();
   table.columns.resize(vars * dim);
 
-  const IntegerDomain integers;
-  Engine<IntegerDomain> reducer(source, integers, monitor);
-  reducer.setBasis(basis);
+  // The normal forms run on FLINT integers (see FmpzDomain): on GMP
+  // integers allocated per term they were a seventh of Cyclic-5 in lex.
+  const FmpzDomain integers;
+  Engine<FmpzDomain> reducer(source, integers, monitor);
+  std::vector<FmpzPoly> packedBasis;
+  for (const Poly<mpz_class>& g : basis) packedBasis.push_back(toFmpzPoly(g));
+  reducer.setBasis(std::move(packedBasis));
+  Fmpz denominator;
   std::vector<Word> packed(source.stride());
   std::size_t bytes = 0;
   for (std::size_t b = 0; b < dim; ++b) {
@@ -112,14 +118,15 @@ std::optional<MultiplicationTable> multiplicationTable(const Layout& source, con
         column.numerators.emplace_back(1);
         continue;
       }
-      Poly<mpz_class> monomial;
+      FmpzPoly monomial;
       toPacked(source, m, packed.data());
-      monomial.push(packed.data(), source.stride(), mpz_class(1));
+      monomial.push(packed.data(), source.stride(), Fmpz(1));
       // normalForm with a scale returns scale * NF exactly.
-      Poly<mpz_class> nf = reducer.normalForm(std::move(monomial), &column.denominator);
+      FmpzPoly nf = reducer.normalForm(std::move(monomial), &denominator);
+      fmpz_get_mpz(column.denominator.get_mpz_t(), denominator.v);
       for (std::size_t t = 0; t < nf.size(); ++t) {
         column.rows.push_back(static_cast<std::uint32_t>(index.at(exponentsOf(source, nf.mon(t, source.stride())))));
-        column.numerators.push_back(std::move(nf.coeffs[t]));
+        fmpz_get_mpz(column.numerators.emplace_back().get_mpz_t(), nf.coeffs[t].v);
       }
       bytes += column.rows.size() * (sizeof(std::uint32_t) + sizeof(mpz_class));
       Progress progress;
