@@ -261,17 +261,25 @@ std::optional<std::vector<ModPoly>> fglmModulo(const MultiplicationTable& table,
   const std::size_t matrixBytes = vars * dim * sizeof(Entry);
   Progress progress;
   progress.stage = "fglm";
+  // Each column's residues are scaled by the inverse denominator at once
+  // (Shoup's multiplication, ModularDomain::mulAll) into a column reserved
+  // at its size: a division per entry and the growth of the columns were a
+  // third of this function on Katsura-5 in lex (95 FGLM primes).
   std::vector<std::vector<Entry>> matrix(table.columns.size());
+  std::vector<std::uint32_t> residues;
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
     monitor.tick(progress, matrixBytes);
     const MultiplicationTable::Column& column = table.columns[c];
     const auto den = static_cast<std::uint32_t>(mpz_fdiv_ui(column.denominator.get_mpz_t(), p));
     if (den == 0) return std::nullopt;
-    const std::uint32_t inverse = domain.inverse(den);
+    residues.resize(column.rows.size());
     for (std::size_t k = 0; k < column.rows.size(); ++k) {
-      std::uint32_t value;
-      domain.mul(value, static_cast<std::uint32_t>(mpz_fdiv_ui(column.numerators[k].get_mpz_t(), p)), inverse);
-      if (value != 0) matrix[c].push_back({column.rows[k], value});
+      residues[k] = static_cast<std::uint32_t>(mpz_fdiv_ui(column.numerators[k].get_mpz_t(), p));
+    }
+    domain.mulAll(residues.data(), residues.data(), residues.size(), domain.inverse(den));
+    matrix[c].reserve(column.rows.size());
+    for (std::size_t k = 0; k < column.rows.size(); ++k) {
+      if (residues[k] != 0) matrix[c].push_back({column.rows[k], residues[k]});
     }
   }
 
