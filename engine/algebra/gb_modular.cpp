@@ -337,14 +337,27 @@ constexpr std::size_t kMaxPrimes = 100000;
 }  // namespace
 
 std::vector<Polynomial> modularGroebner(const std::vector<Polynomial>& input, const RingPtr& ring,
-                                         BudgetMonitor& monitor, GroebnerStats& stats, const LiftTarget* target) {
+                                         BudgetMonitor& monitor, GroebnerStats& stats, const LiftTarget* target,
+                                         const RecordedRun* recorded) {
   const Layout layout(*ring);
   const Layout targetLayout(target ? *target->ring : *ring);
   Lifter lifter(targetLayout, target ? target->ring : ring, monitor);
   // The first prime runs Buchberger in full and records its useful steps;
   // later primes replay them, skipping the pairs that reduce to zero. A
-  // replay that does not fit runs in full and records a new trace.
+  // replay that does not fit runs in full and records a new trace. A run
+  // recorded by the caller is replayed from the first prime on.
   std::optional<Trace> trace;
+  // The counters of the last full modular run, with the method's own.
+  auto fullRunStats = [&stats](const GroebnerStats& run) {
+    const std::size_t primes = stats.primes, replays = stats.replays;
+    stats = run;
+    stats.primes = primes;
+    stats.replays = replays;
+  };
+  if (recorded) {
+    trace = recorded->trace;
+    fullRunStats(recorded->stats);
+  }
   std::uint32_t p = 0x80000000u;
   for (std::size_t attempt = 0; attempt < kMaxPrimes; ++attempt) {
     p = previousPrime(p);
@@ -366,10 +379,7 @@ std::vector<Polynomial> modularGroebner(const std::vector<Polynomial>& input, co
       Engine<ModularDomain> engine(layout, domain, monitor);
       trace.emplace();
       basis = engine.groebner(std::move(reduced), &*trace, !target);
-      const std::size_t primes = stats.primes, replays = stats.replays;
-      stats = engine.stats();  // the counters of the last full modular run
-      stats.primes = primes;
-      stats.replays = replays;
+      fullRunStats(engine.stats());
     }
     ++stats.primes;
     monitor.setPrimes(stats.primes);
@@ -385,7 +395,7 @@ std::vector<Polynomial> modularGroebner(const std::vector<Polynomial>& input, co
 }
 
 bool zeroDimensionalModuloAPrime(const std::vector<Polynomial>& input, const RingPtr& ring,
-                                     BudgetMonitor& monitor) {
+                                     BudgetMonitor& monitor, RecordedRun* run) {
   const Layout layout(*ring);
   for (std::uint32_t p = previousPrime(0x80000000u);; p = previousPrime(p)) {
     const ModularDomain domain{p};
@@ -394,10 +404,13 @@ bool zeroDimensionalModuloAPrime(const std::vector<Polynomial>& input, const Rin
     for (std::size_t i = 0; i < input.size() && usable; ++i) usable = toModular(input[i], layout, domain, reduced[i]);
     if (!usable) continue;
     Engine<ModularDomain> engine(layout, domain, monitor);
-    std::vector<ModPoly> basis = engine.groebner(std::move(reduced));
+    Trace trace;
+    std::vector<ModPoly> basis = engine.groebner(std::move(reduced), &trace);
     std::vector<const Word*> leads;
     for (const ModPoly& g : basis) leads.push_back(g.mons.data());
-    return !basis.empty() && staircaseSize(layout, leads).has_value();
+    const bool zeroDimensional = !basis.empty() && staircaseSize(layout, leads).has_value();
+    if (run) *run = RecordedRun{std::move(trace), engine.stats()};
+    return zeroDimensional;
   }
 }
 

@@ -74,8 +74,10 @@ GroebnerResult groebnerBasis(const Ideal& ideal, const GroebnerOptions& options)
         RingPtr degrevlex = ring->withOrder(MonomialOrder::degrevlex());
         std::vector<Polynomial> generators;
         for (const Polynomial& g : ideal.generators()) generators.push_back(g.inRing(degrevlex));
-        if (gb::zeroDimensionalModuloAPrime(generators, degrevlex, monitor)) {
-          std::vector<Polynomial> first = gb::modularGroebner(generators, degrevlex, monitor, result.stats);
+        gb::RecordedRun run;
+        if (gb::zeroDimensionalModuloAPrime(generators, degrevlex, monitor, &run)) {
+          std::vector<Polynomial> first =
+              gb::modularGroebner(generators, degrevlex, monitor, result.stats, nullptr, &run);
           if (auto converted = gb::modularFglm(first, ring, monitor, result.stats)) {
             result.basis = std::move(*converted);
             result.method = "modular+fglm";
