@@ -41,7 +41,7 @@ const std::array kPlane = {vec3("normal", NonZeroVector, dvec3(0, 1, 0), "Direct
                            material()};
 const std::array kTorus = {real("major_radius", Positive, 1.0, "Radius of the ring's centre line, in the xz plane"),
                            real("minor_radius", Positive, 0.25, "Radius of the tube"), material()};
-const std::array kCone = {real("angle", OpenAngle90, 30.0, "Half-angle at the apex", "degrees"),
+const std::array kCone = {real("angle", OpenAngle90, 30.0, "Angle between the side and the base (the half-angle at the apex is 90 minus it)", "degrees"),
                           real("height", Positive, 1.0, "Distance from the apex down to the base"), material()};
 const std::array kEllipsoid = {vec3("radii", Positive, dvec3(1.0, 0.6, 0.8), "Semi-axes along x, y and z"), material()};
 const std::array kCylinder = {real("radius", Positive, 0.5, "Radius about the y axis"),

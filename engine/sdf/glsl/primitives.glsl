@@ -25,7 +25,8 @@ SHARED_FN real sdTorus(vec3 p, real majorRadius, real minorRadius) {
 }
 
 // bound (thesis, Example 1.2): apex at the origin, opening downwards along -y to
-// height h; sinCos = (sin(angle), cos(angle)) of the half-angle, computed by the host.
+// height h; sinCos = (sin(angle), cos(angle)) of the angle between the side and the
+// base plane (the half-angle at the apex is 90 degrees minus it), computed by the host.
 SHARED_FN real sdCone(vec3 p, vec2 sinCos, real height) {
     real radial = length2d(vec2(p.x, p.z));
     return max(dot2(sinCos, vec2(radial, p.y)), -height - p.y);
