@@ -92,7 +92,7 @@ class Bucket {
       if (best < 0) return false;
       Level& top = levels_[best];
       const Word* topMon = top.poly.mon(top.head, stride);
-      std::copy(topMon, topMon + stride, mon);
+      layout_.copy(mon, topMon);
       coeff = std::move(top.poly.coeffs[top.head]);
       ++top.head;
       for (std::size_t i = 0; i < levels_.size(); ++i) {
@@ -176,7 +176,7 @@ class Bucket {
     Word* write = out.mons.data();
     Coeff* writeCoeff = out.coeffs.data();
     auto emit = [&](const Word* mon, Coeff&& c) {
-      std::copy_n(mon, stride, write);
+      layout_.copy(write, mon);
       write += stride;
       if constexpr (inPlace) {
         *writeCoeff++ = c;
