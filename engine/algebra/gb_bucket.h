@@ -136,6 +136,7 @@ class Bucket {
       const std::size_t stride = layout_.stride();
       p.mons.assign(level.poly.mons.begin() + static_cast<std::ptrdiff_t>(level.head * stride),
                     level.poly.mons.end());
+      p.coeffs.clear();
       p.coeffs.reserve(level.poly.size() - level.head);
       for (std::size_t k = level.head; k < level.poly.size(); ++k) {
         p.coeffs.push_back(std::move(level.poly.coeffs[k]));
@@ -164,24 +165,22 @@ class Bucket {
     // zero-filled.
     const std::size_t most = live(i) + p.size();
     if (out.mons.size() < most * stride) out.mons.resize(most * stride);
-    // Word coefficients are written in place too (push_back's capacity
-    // check per term was a twentieth of a modular run); others are moved in.
-    constexpr bool inPlace = std::is_trivially_copyable_v<Coeff>;
-    out.coeffs.clear();
-    if constexpr (inPlace) {
-      out.coeffs.resize(most);
-    } else {
-      out.coeffs.reserve(most);
-    }
+    // Coefficients are written in place (push_back's capacity check per
+    // term was a twentieth of a modular run). Integers are swapped in, so
+    // the merged polynomials are left holding the scratch's old integers:
+    // released to the pool with them (see release), their allocations are
+    // reused by the next products instead of freed and allocated again.
+    constexpr bool words = std::is_trivially_copyable_v<Coeff>;
+    out.coeffs.resize(most);
     Word* write = out.mons.data();
     Coeff* writeCoeff = out.coeffs.data();
     auto emit = [&](const Word* mon, Coeff&& c) {
       layout_.copy(write, mon);
       write += stride;
-      if constexpr (inPlace) {
+      if constexpr (words) {
         *writeCoeff++ = c;
       } else {
-        out.coeffs.push_back(std::move(c));
+        std::swap(*writeCoeff++, c);
       }
     };
     std::size_t x = level.head, y = 0;
@@ -202,11 +201,11 @@ class Bucket {
     }
     for (; x < a.size(); ++x) emit(a.mon(x, stride), std::move(a.coeffs[x]));
     for (; y < p.size(); ++y) emit(p.mon(y, stride), std::move(p.coeffs[y]));
-    if constexpr (inPlace) out.coeffs.resize(static_cast<std::size_t>(writeCoeff - out.coeffs.data()));
+    out.coeffs.resize(static_cast<std::size_t>(writeCoeff - out.coeffs.data()));
     out.mons.resize(out.coeffs.size() * stride);
     std::swap(a, out);
     level.head = 0;
-    out.coeffs.clear();
+    if constexpr (words) out.coeffs.clear();
     release(std::move(p));
   }
 
@@ -222,9 +221,11 @@ class Bucket {
   // A pooled polynomial keeps the size of its monomial array (stale words,
   // overwritten by whoever takes it: addMultiple resizes, take assigns or
   // swaps), so that reuse does not zero-fill it again.
+  // Integer coefficients stay too (acquire's callers overwrite or clear
+  // them), keeping their allocations for the next products.
   void release(Poly<Coeff>&& p) {
     if (pool_.size() >= kPoolSize || p.mons.capacity() == 0) return;
-    p.coeffs.clear();
+    if constexpr (std::is_trivially_copyable_v<Coeff>) p.coeffs.clear();
     pool_.push_back(std::move(p));
   }
 
