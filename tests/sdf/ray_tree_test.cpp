@@ -96,24 +96,30 @@ Material detectorAt(vec3 p) {
     return m;
 }
 
+// The analytic traces' settings: a tight epsilon, no lights, shadows or AO
+// (a test that wants them sets them).
+TraceSettings analyticSettings(int maxDepth) {
+    return {.maxSteps = 2000,
+            .maxDistance = 100,
+            .epsilon = 1e-6,
+            .epsilonPerDistance = 0,
+            .shadowMode = SHADOW_NONE,
+            .shadowSteps = 1,
+            .aoSamples = 0,
+            .aoDistance = 1,
+            .lightingModel = LIGHTING_BLINN_PHONG,
+            .relaxation = 1,
+            .lightCount = 0,
+            .exposure = 1,
+            .ambientLight = vec3(0),
+            .background = vec3(0),
+            .maxDepth = maxDepth,
+            .rayWeightCutoff = 1e-3};
+}
+
 vec3 traceOne(std::function<Sample(vec3)> field, vec3 eye, vec3 direction, int maxDepth = 4) {
     AnalyticDriver driver{std::vector<vec4>(static_cast<size_t>(MATERIAL_SLOT), vec4(0)), std::move(field)};
-    TraceSettings settings{.maxSteps = 2000,
-                           .maxDistance = 100,
-                           .epsilon = 1e-6,
-                           .epsilonPerDistance = 0,
-                           .shadowMode = SHADOW_NONE,
-                           .shadowSteps = 1,
-                           .aoSamples = 0,
-                           .aoDistance = 1,
-                           .lightingModel = LIGHTING_BLINN_PHONG,
-                           .relaxation = 1,
-                           .lightCount = 0,
-                           .exposure = 1,
-                           .ambientLight = vec3(0),
-                           .background = vec3(0),
-                           .maxDepth = maxDepth,
-                           .rayWeightCutoff = 1e-3};
+    TraceSettings settings = analyticSettings(maxDepth);
     for (int i = 0; i < TRACE_SLOTS; ++i)
         driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
     vec3 forward = normalize3(direction);
@@ -208,22 +214,10 @@ vec3 floorUnderBox(Material box, int shadowMode) {
         return cube < p.y ? shapeSample(cube, box) : shapeSample(p.y, floor);
     };
     AnalyticDriver driver{std::vector<vec4>(static_cast<size_t>(MATERIAL_SLOT), vec4(0)), field};
-    TraceSettings settings{.maxSteps = 2000,
-                           .maxDistance = 100,
-                           .epsilon = 1e-6,
-                           .epsilonPerDistance = 0,
-                           .shadowMode = shadowMode,
-                           .shadowSteps = 500,
-                           .aoSamples = 0,
-                           .aoDistance = 1,
-                           .lightingModel = LIGHTING_BLINN_PHONG,
-                           .relaxation = 1,
-                           .lightCount = 1,
-                           .exposure = 1,
-                           .ambientLight = vec3(0),
-                           .background = vec3(0),
-                           .maxDepth = 4,
-                           .rayWeightCutoff = 1e-3};
+    TraceSettings settings = analyticSettings(4);
+    settings.shadowMode = shadowMode;
+    settings.shadowSteps = 500;
+    settings.lightCount = 1;
     for (int i = 0; i < TRACE_SLOTS; ++i)
         driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
     Light overhead{vec3(0, 1, 0), vec3(1), 8};
