@@ -92,7 +92,7 @@ void noteViewportError(AppState& app) {
     const std::string& error = app.viewport->error();
     if (error == app.viewportErrorLogged) return;
     app.viewportErrorLogged = error;
-    if (!error.empty()) app.ui.error("GLSL backend: " + error + " (the CPU backend still works)");
+    if (!error.empty()) app.ui.error(app.viewport->errorLine());
 }
 
 // Scripted runs write every message the status bar shows to the standard

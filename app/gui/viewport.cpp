@@ -105,6 +105,11 @@ void Viewport::update(const scene::Scene& scene, std::uint64_t revision, const u
     if (lanePlan_.standIn && !glReady && !glFailed) stats_.status = "compiling shader; CPU image meanwhile";
 }
 
+std::string Viewport::errorLine() const {
+    constexpr std::string_view kBackend = "GL backend: ";
+    return (error_.starts_with(kBackend) ? error_ : std::string(kBackend) + error_) + " (the CPU backend still works)";
+}
+
 Viewport::Next Viewport::nextProgram(Lane& lane) {
     if (lane.next) return Next::Ready;
     // a preview of a state the texture already shows is not worth drawing

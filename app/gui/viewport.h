@@ -73,6 +73,9 @@ public:
     const ViewportStats& stats() const { return stats_; }
     // A shader build failure, or "" (shown in the UI; the CPU backend still works).
     const std::string& error() const { return error_; }
+    // The error as the viewport and the status bar show it: named once as the
+    // GL backend's (the engine's messages already start "GL backend: ").
+    std::string errorLine() const;
     const glcontext::GlContextInfo& glInfo() const { return context_.info(); }
 
 private:

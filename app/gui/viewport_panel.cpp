@@ -214,7 +214,7 @@ void drawViewportPanel(AppState& app) {
     if (app.ui.compare != ui::CompareMode::Off) comparisonLine(app);
     if (!app.viewport->error().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));
-        ImGui::TextWrapped("GLSL backend: %s  (the CPU backend still works)", app.viewport->error().c_str());
+        ImGui::TextWrapped("%s", app.viewport->errorLine().c_str());
         ImGui::PopStyleColor();
     }
     ImVec2 corner = ImGui::GetCursorScreenPos();

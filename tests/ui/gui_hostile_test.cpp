@@ -102,6 +102,7 @@ TEST_F(GuiHostileTest, ASceneOverTheShaderBoundIsRefusedByTheGlViewportWithAMess
     std::string log = test::readAll(dir / "run.log");
     EXPECT_NE(log.find("the scene makes a shader of 1799 statements"), std::string::npos) << log;
     EXPECT_NE(log.find("the CPU backend still works"), std::string::npos) << log;
+    EXPECT_EQ(log.find("backend: GL backend"), std::string::npos) << "the backend named twice: " << log;
 }
 
 TEST_F(GuiHostileTest, TheAutosaveOfAKilledWindowIsRestoredOnTheNextStart) {
