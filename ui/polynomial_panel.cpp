@@ -141,8 +141,13 @@ void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& stat
             PolynomialProgress p = state.job.progress();
             if (ImGui::Button("Cancel")) state.job.cancel();
             ImGui::SameLine();
-            ImGui::Text("%.1f s  basis %zu  pairs left %zu  %s", p.elapsedSeconds, p.basisSize, p.pairsLeft,
-                        p.stage.c_str());
+            // interpolation, lifting and verification have no basis or pairs to count
+            if (p.basisSize > 0 || p.pairsLeft > 0) {
+                ImGui::Text("%.1f s  basis %zu  pairs left %zu  %s", p.elapsedSeconds, p.basisSize, p.pairsLeft,
+                            p.stage.c_str());
+            } else {
+                ImGui::Text("%.1f s  %s", p.elapsedSeconds, p.stage.c_str());
+            }
         } else {
             ImGui::BeginDisabled(!state.problem.empty() || !parametersCurrent(state));
             if (ImGui::Button("Run")) runPolynomial(state);
