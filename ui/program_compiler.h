@@ -51,7 +51,12 @@ public:
     ProgramCompiler(const ProgramCompiler&) = delete;
     ProgramCompiler& operator=(const ProgramCompiler&) = delete;
 
-    // Asks for `scene` compiled with `options`; the same tag again does nothing.
+    // Asks for `scene` compiled with `options`. The same tag again does
+    // nothing while its program is on the way or not taken yet; once taken,
+    // asking again means the caller dropped it (the viewport replans a lane
+    // when a drag starts or ends on an unchanged scene), so it compiles again:
+    // waiting for a program already handed out left the viewport "compiling
+    // the scene" until the next edit.
     void request(std::shared_ptr<const scene::Scene> scene, const program::CompileOptions& options, const Tag& tag);
     // The newest finished program not taken yet, moved out: the last
     // request's, or before it is ready the one it superseded after that one
@@ -75,6 +80,7 @@ private:
         Tag tag;
         jobs::JobHandle job;
         std::shared_ptr<std::optional<program::Program>> program;  // written by the worker before it finishes
+        bool taken = false;
     };
     static std::optional<Compiled> takeFrom(std::optional<Request>& request);
 
@@ -88,7 +94,7 @@ private:
 template <typename Tag>
 void ProgramCompiler<Tag>::request(std::shared_ptr<const scene::Scene> scene, const program::CompileOptions& options,
                                    const Tag& tag) {
-    if (last_ && last_->tag == tag) return;
+    if (last_ && last_->tag == tag && !last_->taken) return;
     if (last_) {
         if (last_->job->started()) {
             superseded_ = std::move(last_);  // it will finish: newer than anything taken before
@@ -110,6 +116,7 @@ std::optional<typename ProgramCompiler<Tag>::Compiled> ProgramCompiler<Tag>::tak
     if (!request || !request->job->finished() || !*request->program) return std::nullopt;
     Compiled compiled{std::move(**request->program), request->tag};
     request->program->reset();
+    request->taken = true;
     return compiled;
 }
 

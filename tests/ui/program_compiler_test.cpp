@@ -60,10 +60,31 @@ TEST(ProgramCompiler, TheProgramIsTheDirectCompileTakenOnce) {
     expectSameProgram(compiled->program, program::compileScene(*scene, kOptions));
     EXPECT_FALSE(compiler.take());  // moved out
     EXPECT_EQ(compiler.error(), "");
-    // the same key again is the same request: nothing compiles
+}
+
+// The same tag while its program is on the way or untaken is the same
+// request; asked again after it was taken, the caller dropped it, and it
+// compiles again. (The viewport replans its lanes when a drag starts or ends
+// on an unchanged scene and asks for the program it had taken: it waited,
+// "compiling the scene", until the next edit.)
+TEST(ProgramCompiler, TheSameTagCompilesOnceUntilTakenAndAgainAfter) {
+    jobs::JobQueue queue(1);
+    Compiler compiler(queue);
+    auto scene = defaultScene();
     compiler.request(scene, kOptions, 1);
+    compiler.request(scene, kOptions, 1);
+    compiler.wait();
+    compiler.request(scene, kOptions, 1);  // finished, not taken: still the same request
     EXPECT_FALSE(compiler.pending());
     EXPECT_EQ(compiler.compiles(), 1);
+    ASSERT_TRUE(compiler.take());
+    compiler.request(scene, kOptions, 1);
+    compiler.wait();
+    EXPECT_EQ(compiler.compiles(), 2);
+    std::optional<Compiler::Compiled> again = compiler.take();
+    ASSERT_TRUE(again);
+    EXPECT_EQ(again->tag, 1u);
+    expectSameProgram(again->program, program::compileScene(*scene, kOptions));
 }
 
 TEST(ProgramCompiler, RequestsWhileTheWorkerIsBusyCompileOnlyTheNewest) {
