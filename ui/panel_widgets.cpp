@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <imgui.h>
@@ -31,30 +33,78 @@ bool finiteNumber(const char* text) {
     return *end == '\0' && std::isfinite(v);
 }
 
-// The typed text of the drag field `id` when it is being typed into.
-std::optional<std::string> typedText(ImGuiID id) {
-    if (!ImGui::TempInputIsActive(id)) return std::nullopt;
-    ImGuiInputTextState* state = ImGui::GetInputTextState(id);
-    if (!state || state->TextA.Size == 0) return std::string();
-    return std::string(state->TextA.Data);
+// One session of typing into a drag field (Ctrl+click or double-click):
+// ImGui applies the text as it is typed, so the value before the session is
+// kept to put back when the text entered is not a finite number ("1e99" then
+// "1e999" had left 1e99 in the scene under the error), and what its
+// scientific-number filter drops ("nan", "inf", letters) is collected to say
+// so, where it used to vanish without a word.
+struct TypingSession {
+    double before = 0;
+    std::string dropped;
+    size_t reported = 0;  // of `dropped`, already said
+    int frame = 0;        // the last frame the field was being typed into
+};
+
+std::unordered_map<ImGuiID, TypingSession>& typingSessions() {
+    static std::unordered_map<ImGuiID, TypingSession> sessions;
+    return sessions;
 }
 
-// Finishes a drag widget edit: a value made non-finite by typed text ("nan",
-// "1e999") is put back, and text that is not a finite number, once entered,
-// is reported in `edit.notANumber` (ImGui itself would keep the old value
-// without a word).
-WidgetEdit checkedEdit(bool changed, const std::vector<std::optional<std::string>>& typed, double* values,
-                       const double* before) {
+// What ImGui's CharsScientific filter lets into a number field.
+bool keptByNumberFilter(ImWchar c) {
+    return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-' || c == '*' || c == '/' || c == 'e' ||
+           c == 'E';
+}
+
+struct TypedField {
+    ImGuiID id = 0;
+    std::optional<std::string> text;  // the typed text when the field is being typed into
+};
+
+// Called before the drag widget `id` that edits `value`: starts or continues
+// its typing session and reads its text.
+TypedField observeTyping(ImGuiID id, double value) {
+    if (!ImGui::TempInputIsActive(id)) return {id, std::nullopt};
+    const int frame = ImGui::GetFrameCount();
+    TypingSession& session = typingSessions().try_emplace(id, TypingSession{value, {}, 0, frame}).first->second;
+    if (session.frame < frame - 1) session = TypingSession{value, {}, 0, frame};  // a session left without ending
+    session.frame = frame;
+    for (ImWchar c : ImGui::GetIO().InputQueueCharacters) {
+        if (c >= 32 && !keptByNumberFilter(c) && session.dropped.size() < 40) session.dropped += static_cast<char>(c < 127 ? c : '?');
+    }
+    ImGuiInputTextState* state = ImGui::GetInputTextState(id);
+    if (!state || state->TextA.Size == 0) return {id, std::string()};
+    return {id, std::string(state->TextA.Data)};
+}
+
+// Finishes a drag widget edit: a value made non-finite by typed text is put
+// back; text that is not a finite number, once entered, puts back the value
+// from before the typing session and is reported in `edit.notANumber`, as are
+// characters the field refused while they are typed.
+WidgetEdit checkedEdit(bool changed, const std::vector<TypedField>& typed, double* values, const double* before) {
     WidgetEdit edit = finishEdit(changed);
     for (size_t i = 0; i < typed.size(); ++i) {
         if (!std::isfinite(values[i])) {
             values[i] = before[i];
             edit.changed = false;
         }
-        if (typed[i] && ImGui::IsItemDeactivated() && !finiteNumber(typed[i]->c_str())) {
-            edit.notANumber = *typed[i];
-            edit.finished = true;
+        if (!typed[i].text) continue;
+        auto found = typingSessions().find(typed[i].id);
+        if (found == typingSessions().end()) continue;
+        TypingSession& session = found->second;
+        if (session.dropped.size() > session.reported) {
+            edit.notANumber = session.dropped;
+            session.reported = session.dropped.size();
         }
+        if (!ImGui::IsItemDeactivated()) continue;
+        if (!finiteNumber(typed[i].text->c_str())) {
+            edit.notANumber = session.dropped.empty() ? *typed[i].text : session.dropped;
+            edit.changed = edit.changed || values[i] != session.before;
+            values[i] = session.before;
+        }
+        edit.finished = true;
+        typingSessions().erase(found);
     }
     return edit;
 }
@@ -63,7 +113,7 @@ WidgetEdit checkedEdit(bool changed, const std::vector<std::optional<std::string
 WidgetEdit dragReal(const char* label, double& value, double speed, double minimum, double maximum,
                     const char* format) {
     double before = value;
-    std::vector<std::optional<std::string>> typed{typedText(ImGui::GetID(label))};
+    std::vector<TypedField> typed{observeTyping(ImGui::GetID(label), value)};
     bool changed = ImGui::DragScalar(label, ImGuiDataType_Double, &value, static_cast<float>(speed),
                                      &minimum, &maximum, format);
     return checkedEdit(changed, typed, &value, &before);
@@ -73,11 +123,11 @@ WidgetEdit dragVec3(const char* label, glm::dvec3& value, double speed, double m
                     const char* format) {
     glm::dvec3 before = value;
     // DragScalarN's components are DragScalar("") under the ids label, then 0, 1, 2
-    std::vector<std::optional<std::string>> typed;
+    std::vector<TypedField> typed;
     ImGui::PushID(label);
     for (int i = 0; i < 3; ++i) {
         ImGui::PushID(i);
-        typed.push_back(typedText(ImGui::GetID("")));
+        typed.push_back(observeTyping(ImGui::GetID(""), value[i]));
         ImGui::PopID();
     }
     ImGui::PopID();
