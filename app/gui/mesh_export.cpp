@@ -4,6 +4,7 @@
 #include <sstream>
 #include <utility>
 
+#include "io/atomic_file.h"
 #include "mesh/mesh_files.h"
 
 namespace sdfwb::app::gui {
@@ -12,7 +13,9 @@ namespace {
 // The job's body: meshes and writes the file, returns the one-line outcome.
 std::string exportMesh(const scene::Scene& scene, const MeshExportSettings& chosen, jobs::Job& job) {
     try {
-        mesh::meshFormatOf(chosen.path);  // a wrong extension fails before the sampling
+        // a wrong extension or a folder that cannot take the file fails before the sampling
+        mesh::meshFormatOf(chosen.path);
+        io::checkCanCreate(chosen.path);
         auto start = std::chrono::steady_clock::now();
         mesh::Mesh result =
             mesh::extractMesh(scene, chosen.resolution, {&job.cancelFlag(), [&job](double f) { job.setProgress(f); }});

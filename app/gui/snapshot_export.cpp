@@ -6,6 +6,7 @@
 
 #include "app/backend.h"
 #include "image/image_io.h"
+#include "io/atomic_file.h"
 #include "program/compile_scene.h"
 
 namespace sdfwb::app::gui {
@@ -15,7 +16,9 @@ namespace {
 std::string exportSnapshot(const scene::Scene& scene, const SnapshotSettings& chosen, glcontext::GlContext* context,
                            jobs::Job& job) {
     try {
+        // a wrong extension or a folder that cannot take the file fails before the render
         image::checkWritableFormat(chosen.path);
+        io::checkCanCreate(chosen.path);
         auto start = std::chrono::steady_clock::now();
         program::Program program = program::compileScene(scene, {chosen.width, chosen.height, chosen.aa});
         std::unique_ptr<render::Backend> backend = makeBackend(chosen.gl ? Backend::Gl : Backend::Cpu, context);
