@@ -77,6 +77,13 @@ void outcomeWidgets(Editor& editor, UiState& ui, PolynomialPanelState& state, co
         return;
     }
     ImGui::TextUnformatted(outcome.message.c_str());
+    if (!resultIsCurrent(state)) {
+        // the equations or their reading changed since Run: say whose result this is
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(240, 190, 90, 255));
+        wrappedText("outdated: the result of " + shortened(state.ran.equations, 80) +
+                    " as run; Run again for the equations above");
+        ImGui::PopStyleColor();
+    }
     std::string equations;
     for (const std::string& g : outcome.generators) equations += (equations.empty() ? "" : "\n") + g + " = 0";
     longTextBox("result", equations, ImGui::GetTextLineHeight() * 8, state.resultText);
@@ -112,9 +119,15 @@ void readParameters(PolynomialPanelState& state) {
 
 bool parametersCurrent(const PolynomialPanelState& state) { return state.readEquations == state.request.equations; }
 
+bool resultIsCurrent(const PolynomialPanelState& state) {
+    return state.ran.equations == state.request.equations && state.ran.trig == state.request.trig &&
+           state.ran.order == state.request.order;
+}
+
 void runPolynomial(PolynomialPanelState& state) {
     PolynomialRequest request = state.request;
     request.parameterRanges = state.boundsFromRanges ? state.ranges : std::vector<ParameterRange>{};
+    state.ran = request;
     state.job.start(std::move(request));
 }
 
@@ -125,13 +138,13 @@ Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome&
     return problems;
 }
 
-void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& state) {
+void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& state, ImVec2 areaMin, ImVec2 areaMax) {
     if (!state.open) return;
-    // first shown in the viewport's lower left, clear of the statistics overlay
-    const ImGuiViewport* screen = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(screen->WorkPos.x + 16, screen->WorkPos.y + screen->WorkSize.y - 16),
-                            ImGuiCond_FirstUseEver, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(520, 420), ImGuiCond_FirstUseEver);
+    // first shown in the viewport's lower left, clear of the statistics
+    // overlay and of the status bar below (it ran under it, hiding Add to scene)
+    constexpr float kMargin = 16;
+    ImGui::SetNextWindowPos(ImVec2(areaMin.x + kMargin, areaMax.y - kMargin), ImGuiCond_FirstUseEver, ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(520, std::min(420.0f, areaMax.y - areaMin.y - 2 * kMargin)), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Polynomial", &state.open)) {
         bool running = state.job.running();
         ImGui::BeginDisabled(running);

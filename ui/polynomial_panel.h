@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <imgui.h>
+
 #include "ui/editor.h"
 #include "ui/long_text.h"
 #include "ui/polynomial_job.h"
@@ -27,6 +29,7 @@ struct PolynomialPanelState {
     ParameterCheck check;                // reads the equations off the UI thread
     double sheetThickness = 0;           // of the node added: 0 the solid F <= 0, else a sheet
     LongTextBoxState resultText;         // the result's box: the path it is saved to
+    PolynomialRequest ran;               // what the last Run sent: the result shown is of it
     PolynomialJob job;
 };
 
@@ -40,6 +43,9 @@ void checkParameters(PolynomialPanelState& state);
 void readParameters(PolynomialPanelState& state);
 // `ranges` and `problem` describe the equations as they are now.
 bool parametersCurrent(const PolynomialPanelState& state);
+// The last Run was of the equations, trigonometric reading and order as they
+// are now (else the result shown is marked outdated).
+bool resultIsCurrent(const PolynomialPanelState& state);
 
 // Starts the job on the panel's request, the ranges included (after
 // readParameters; requires an empty `problem`).
@@ -50,6 +56,8 @@ void runPolynomial(PolynomialPanelState& state);
 Problems addPolynomialNode(Editor& editor, UiState& ui, const PolynomialOutcome& outcome, double sheetThickness);
 
 // Draws the window while state.open (never blocks: the job is only polled).
-void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& state);
+// It first appears in `area` (the viewport's rectangle, clear of the status
+// bar), at its lower left.
+void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& state, ImVec2 areaMin, ImVec2 areaMax);
 
 }  // namespace sdfwb::ui

@@ -488,7 +488,8 @@ void drawMainWindow(AppState& app) {
     ImGui::End();
     ImGui::PopStyleVar();
     statusBar(app, ImVec2(origin.x, origin.y + height), width, statusHeight);
-    ui::drawPolynomialPanel(app.editor, app.ui, app.polynomial);
+    ui::drawPolynomialPanel(app.editor, app.ui, app.polynomial, origin,
+                            ImVec2(origin.x + width - kSideWidth, origin.y + height));
     ui::drawProblemsWindow(app.editor, app.ui);
     shortcutsWindow(app);
     snapshotDialog(app);

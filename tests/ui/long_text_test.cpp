@@ -88,7 +88,7 @@ TEST_F(LongTextTest, PolynomialWindowShowsA16KResultAndSavesItWhole) {
     UiState ui;
     for (int frame = 0; frame < 3; ++frame) {
         ImGui::NewFrame();
-        drawPolynomialPanel(editor, ui, state);
+        drawPolynomialPanel(editor, ui, state, ImVec2(0, 0), ImGui::GetIO().DisplaySize);
         ImGui::Render();
         EXPECT_LT(largestDrawList(), 20000);
     }

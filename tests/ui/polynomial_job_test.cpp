@@ -100,6 +100,25 @@ TEST(PolynomialPanel, ReadsEquationsAsTheyAreTypedAndRunsInTheChosenOrder) {
     EXPECT_NEAR(o.bounds->second.z, 8 + 0.05 * 9, 1e-9);  // t^3 over [-1, 2]
 }
 
+// The result shown belongs to the equations as run: edited after Run, it is
+// outdated (the panel says so) until Run again.
+TEST(PolynomialPanel, AResultIsOutdatedOnceTheEquationsChange) {
+    PolynomialPanelState state;
+    state.request.equations = "x = u*v; y = v; z = u^2";
+    readParameters(state);
+    runPolynomial(state);
+    state.job.wait();
+    EXPECT_TRUE(resultIsCurrent(state));
+    state.request.equations = "x = u*v; y = v; z = u^3";
+    EXPECT_FALSE(resultIsCurrent(state));
+    state.request.equations = "x = u*v; y = v; z = u^2";
+    state.request.order = algebra::EliminationOrder::Lex;
+    EXPECT_FALSE(resultIsCurrent(state)) << "another order is another run";
+    runPolynomial(state);
+    state.job.wait();
+    EXPECT_TRUE(resultIsCurrent(state));
+}
+
 // Cancel and progress only touch the shared state: they return at once while
 // the worker runs. A cancel right after the start stops a computation far
 // longer than the moment between them at its first safe point.
