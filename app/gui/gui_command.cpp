@@ -1,5 +1,6 @@
 #include "app/gui/gui_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -218,7 +219,19 @@ int runGui(const GuiArguments& arguments) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(arguments.width, arguments.height, "SDF Workbench", nullptr, nullptr);
+    // No larger than the screen's work area: on an 800x600 screen the 1280x800
+    // window put the status bar and the restore dialog's buttons off the
+    // screen. Scripts keep the size their screenshots are compared at.
+    int width = arguments.width, height = arguments.height;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor(); monitor && !script) {
+        int x = 0, y = 0, areaWidth = 0, areaHeight = 0;
+        glfwGetMonitorWorkarea(monitor, &x, &y, &areaWidth, &areaHeight);
+        if (areaWidth > 0 && areaHeight > 0) {
+            width = std::min(width, areaWidth);
+            height = std::min(height, areaHeight);
+        }
+    }
+    GLFWwindow* window = glfwCreateWindow(width, height, "SDF Workbench", nullptr, nullptr);
     if (!window) {
         std::cerr << "sdf-workbench gui: cannot open an OpenGL 3.3 window: " << glfwErrorText << "\n";
         glfwTerminate();
