@@ -35,8 +35,13 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& line) {
     } catch (const CLI::ParseError& error) {
         // --help and --version are "errors" with exit code 0
         if (error.get_exit_code() == 0) return app.exit(error);
-        // one line, and the exit code of every other bad input
-        std::cerr << "sdf-workbench: " << error.what() << " (see --help)\n";
+        // one line, naming the command it is about, and the exit code of every other bad input
+        std::string where = "sdf-workbench";
+        for (const auto& [subcommand, command] : commands) {
+            if (subcommand->parsed()) where += " " + subcommand->get_name();
+        }
+        std::cerr << where << ": " << error.what() << " (see " << (where == "sdf-workbench" ? "" : where + " ")
+                  << "--help)\n";
         return kExitError;
     }
     for (const auto& [subcommand, command] : commands) {

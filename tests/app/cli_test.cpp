@@ -169,8 +169,8 @@ TEST_F(Cli, ImplicitizeTakesTheEliminationOrder) {
     ProcessResult unknown = run("implicitize \"x = t; y = t^2; z = t^3\" --order revlex");
     EXPECT_EQ(unknown.exitCode, 2);
     EXPECT_EQ(unknown.output,
-              "sdf-workbench: --order: revlex not in {elimination,elimination-deglex,elimination-lex,lex} "
-              "(see --help)\n");
+              "sdf-workbench implicitize: --order: revlex not in {elimination,elimination-deglex,elimination-lex,lex} "
+              "(see sdf-workbench implicitize --help)\n");
 }
 
 TEST_F(Cli, GroebnerPrintsAReducedBasisInInputSyntax) {
