@@ -143,7 +143,8 @@ void runFrame(AppState& app, Host& host) {
     app.thumbnails->update(app.view.interacting || app.ui.draggingNode);
     app.snapshot.poll();
     for (std::string outcome : {app.snapshot.takeOutcome(), app.meshExport.takeOutcome()}) {
-        if (!outcome.empty()) (outcome.starts_with("wrote") ? app.ui.info(outcome) : app.ui.error(outcome));
+        // "wrote ...", "... cancelled; nothing written" or "... failed: ...": only a failure is a problem
+        if (!outcome.empty()) (outcome.find(" failed: ") == std::string::npos ? app.ui.info(outcome) : app.ui.error(outcome));
     }
     autosaveTick(app, start);
     noteViewportError(app);
