@@ -5,6 +5,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "io/atomic_file.h"
 #include "scene/scene_json.h"
 #include "app/user_files/user_paths.h"
 
@@ -203,6 +204,13 @@ void drawFileDialogs(AppState& app) {
 
 fs::path autosavePath() { return stateDirectory() / "autosave.json"; }
 
+namespace {
+// Beside the autosave, the file the work was opened from or last saved to
+// (absent for a new scene): restored work comes back as that file's unsaved
+// changes, under its name, and Save writes it there.
+fs::path autosaveSourcePath() { return stateDirectory() / "autosave-source.txt"; }
+}  // namespace
+
 void autosaveTick(AppState& app, double now) {
     constexpr double kInterval = 60.0;
     if (app.scripted || now - app.files.lastAutosave < kInterval) return;
@@ -214,6 +222,12 @@ std::string writeAutosave(AppState& app) {
     try {
         fs::create_directories(autosavePath().parent_path());
         scene::saveSceneFile(app.editor.scene(), autosavePath());
+        if (app.files.current.empty()) {
+            std::error_code ignored;
+            fs::remove(autosaveSourcePath(), ignored);
+        } else {
+            io::writeTextAtomically(autosaveSourcePath(), fs::absolute(app.files.current).string());
+        }
     } catch (const std::exception& error) {
         std::string problem = std::string("autosave failed: ") + error.what();
         app.ui.error(problem);
@@ -233,14 +247,21 @@ std::string restoreAutosave(AppState& app) {
     }
     app.editor.apply("Restore", [](scene::Scene&) {});  // restored work is unsaved work
     app.files.current.clear();
+    try {
+        if (fs::exists(autosaveSourcePath())) app.files.current = io::readTextFile(autosaveSourcePath(), 1 << 16);
+    } catch (const std::exception&) {
+        // the work is restored all the same, as a new scene
+    }
     app.files.offerRestore = false;
-    app.ui.info("restored unsaved work from " + autosavePath().string());
+    app.ui.info("restored unsaved work" + (app.files.current.empty() ? std::string() : " of " + app.files.current.string()) +
+                " from " + autosavePath().string());
     return "";
 }
 
 void removeAutosave() {
     std::error_code error;
     fs::remove(autosavePath(), error);
+    fs::remove(autosaveSourcePath(), error);
 }
 
 std::string windowTitle(const AppState& app) {

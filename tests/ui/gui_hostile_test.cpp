@@ -111,9 +111,10 @@ TEST_F(GuiHostileTest, TheAutosaveOfAKilledWindowIsRestoredOnTheNextStart) {
                                                                "set radius 0.4\n"
                                                                "autosave\n");
     const fs::path autosave = dir / "state/sdf-workbench/autosave.json";
+    fs::copy_file(fs::path(sdfwb::test::sourceDir()) / "scenes/default.json", dir / "scene.json");
     // the script ends with the window open and the edit unsaved; the window
     // is killed once it says it autosaved
-    FILE* output = ::popen((test::guiShellCommand(dir, "--script script.txt", true) + " 2>&1").c_str(), "r");
+    FILE* output = ::popen((test::guiShellCommand(dir, "scene.json --script script.txt", true) + " 2>&1").c_str(), "r");
     ASSERT_NE(output, nullptr);
     std::string lines;
     char line[4096];
@@ -133,6 +134,9 @@ TEST_F(GuiHostileTest, TheAutosaveOfAKilledWindowIsRestoredOnTheNextStart) {
     std::ofstream(dir / "script.txt") << "restore\nsave recovered.json\nquit\n";
     test::runGuiScript(dir);
     ASSERT_FALSE(HasFailure());
+    EXPECT_NE(test::readAll(dir / "run.log").find("restored unsaved work of " + fs::absolute(dir / "scene.json").string()),
+              std::string::npos)
+        << "the work comes back as the file's it was opened from: " << test::readAll(dir / "run.log");
     EXPECT_EQ(scene::loadSceneFile(dir / "recovered.json"), editedDefaultScene());
     EXPECT_FALSE(fs::exists(autosave)) << "saving the restored work keeps the autosave";
 }
