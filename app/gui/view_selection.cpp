@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/gui/app_state.h"
+#include "app/gui/viewport_panel.h"
 #include "ui/transform_handles.h"
 #include "ui/view_picking.h"
 
@@ -89,7 +90,9 @@ void readout(AppState& app, ImVec2 corner, ImVec2 size) {
                    reading->height == app.view.height;
     std::string text = ui::readoutText(reading->pick);
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    ImVec2 at(corner.x + 8, corner.y + size.y - ImGui::GetTextLineHeight() - 8);
+    // above the image's note, which it covered half of
+    const float note = app.viewport->main().note.empty() ? 0 : slotNoteHeight();
+    ImVec2 at(corner.x + 8, corner.y + size.y - note - ImGui::GetTextLineHeight() - 8);
     ImVec2 extent = ImGui::CalcTextSize(text.c_str());
     draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3),
                         IM_COL32(20, 22, 26, 190), 3);

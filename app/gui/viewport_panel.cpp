@@ -144,6 +144,12 @@ void statsOverlay(AppState& app, ImVec2 corner) {
     ImGui::PopStyleColor();
 }
 
+}  // namespace
+
+float slotNoteHeight() { return ImGui::GetTextLineHeightWithSpacing() + 8; }
+
+namespace {
+
 // One slot's image with its caption at the bottom left and, when the image
 // is not the current state's (view_choice.h), its note on a dark band along
 // the bottom, above which the caption moves.
@@ -152,7 +158,7 @@ void slotImage(const SlotImage& slot, ImVec2 corner, ImVec2 size, const char* ca
     ImDrawList* draw = ImGui::GetWindowDrawList();
     float bottom = corner.y + size.y;
     if (!slot.note.empty()) {
-        const float band = ImGui::GetTextLineHeightWithSpacing() + 8;
+        const float band = slotNoteHeight();
         draw->PushClipRect(corner, ImVec2(corner.x + size.x, bottom), true);
         draw->AddRectFilled(ImVec2(corner.x, bottom - band), ImVec2(corner.x + size.x, bottom),
                             IM_COL32(20, 22, 26, 200));

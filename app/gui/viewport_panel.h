@@ -8,6 +8,9 @@
 namespace sdfwb::app::gui {
 
 void drawViewportPanel(AppState& app);
+// The height of the band along an image's bottom that says it is not the
+// current state's (or whose it is); what else sits at the bottom goes above it.
+float slotNoteHeight();
 // Aims the camera at the whole scene (undoable).
 void frameAll(AppState& app);
 
