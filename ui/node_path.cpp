@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "scene/visibility.h"
+
 namespace sdfwb::ui {
 
 std::string formatNodePath(const NodePath& path) {
@@ -77,6 +79,18 @@ NodeT* walk(NodeT& root, const NodePath& path) {
 
 const scene::Node* findNode(const scene::Node& root, const NodePath& path) { return walk(root, path); }
 scene::Node* findNode(scene::Node& root, const NodePath& path) { return walk(root, path); }
+
+bool drawsAt(const scene::Node& root, const NodePath& path) {
+    const scene::Visibility visibility(root);
+    const scene::Node* node = &root;
+    if (!visibility.draws(*node)) return false;
+    for (int index : path) {
+        if (index < 0 || static_cast<size_t>(index) >= node->children.size()) return false;
+        node = &node->children[static_cast<size_t>(index)];
+        if (!visibility.draws(*node)) return false;
+    }
+    return true;
+}
 
 bool isWithin(const NodePath& inner, const NodePath& outer) {
     return inner.size() >= outer.size() && std::equal(outer.begin(), outer.end(), inner.begin());

@@ -32,6 +32,11 @@ bool splitJsonPath(std::string_view text, std::vector<JsonStep>& steps);
 const scene::Node* findNode(const scene::Node& root, const NodePath& path);
 scene::Node* findNode(scene::Node& root, const NodePath& path);
 
+// Whether the node at `path` draws (scene/visibility.h): it and every node
+// above it are neither hidden nor left out by a solo. False when the path
+// leads nowhere.
+bool drawsAt(const scene::Node& root, const NodePath& path);
+
 // Whether `inner` is `outer` or lies inside its subtree.
 bool isWithin(const NodePath& inner, const NodePath& outer);
 

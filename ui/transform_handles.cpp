@@ -110,7 +110,8 @@ std::optional<HandleMode> handleModeNamed(std::string_view name) {
 
 std::optional<HandleLayout> handleLayout(const scene::Scene& scene, const NodePath& path, HandleMode mode, int width,
                                          int height) {
-    if (width <= 0 || height <= 0 || !findNode(scene.root, path)) return std::nullopt;
+    // a node that does not draw (hidden, or left out by a solo) gets no handles
+    if (width <= 0 || height <= 0 || !drawsAt(scene.root, path)) return std::nullopt;
     HandleLayout layout;
     layout.pivotWorld = pivotOf(scene.root, siteFor(scene.root, path, kindOf(mode)), mode);
     std::optional<glm::dvec2> pivot = projectToView(scene, layout.pivotWorld, width, height);

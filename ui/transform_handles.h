@@ -49,7 +49,8 @@ struct HandleLayout {
     std::array<bool, 3> visible{true, true, true};  // false: the axis points at the eye (no direction to drag)
 };
 
-// nullopt when `path` leads nowhere or its pivot is behind the eye.
+// nullopt when `path` leads nowhere, its node does not draw, or its pivot is
+// behind the eye.
 std::optional<HandleLayout> handleLayout(const scene::Scene& scene, const NodePath& path, HandleMode mode, int width,
                                          int height);
 

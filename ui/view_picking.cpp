@@ -36,6 +36,7 @@ ViewRay viewRay(const scene::Scene& scene, int width, int height, const glm::dve
 }
 
 std::optional<ImageRect> outlineRect(const scene::Scene& scene, const NodePath& path, int width, int height) {
+    if (!drawsAt(scene.root, path)) return std::nullopt;  // nothing drawn to outline
     program::Bounds b = worldBounds(scene.root, path);
     if (b.empty || b.infinite) return std::nullopt;
     std::optional<ImageRect> rect;

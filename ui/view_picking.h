@@ -20,8 +20,8 @@ cpu::PickResult pickView(const scene::Scene& scene, int width, int height, doubl
 void selectPicked(Editor& editor, const cpu::PickResult& pick);
 
 // The image rectangle (top-left, bottom-right pixels) that the node's world
-// bounds cover in a width x height view; nullopt when unbounded, missing, or
-// wholly behind the eye.
+// bounds cover in a width x height view; nullopt when unbounded, missing,
+// not drawn (hidden or left out by a solo), or wholly behind the eye.
 struct ImageRect {
     glm::dvec2 min, max;
 };

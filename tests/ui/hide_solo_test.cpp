@@ -8,6 +8,7 @@
 #include "support/source_tree.h"
 #include "support/still_script_host.h"
 #include "ui/script.h"
+#include "ui/transform_handles.h"
 #include "ui/view_picking.h"
 
 namespace sdfwb::ui {
@@ -54,6 +55,24 @@ TEST(HideSolo, AClickPassesThroughAHiddenNode) {
     ASSERT_TRUE(editor.setHidden({0, 0}, false).empty());
     selectPicked(editor, pickView(editor.scene(), w, h, ball.x, ball.y));
     EXPECT_EQ(editor.selection(), (NodePath{0, 0}));
+}
+
+// A selected node that draws nothing (hidden, or another node soloed) has no
+// outline and no handles: they stood on empty space.
+TEST(HideSolo, ANodeThatDoesNotDrawHasNoOutlineOrHandles) {
+    Editor editor(defaultScene());
+    const int w = 480, h = 270;
+    const NodePath ball{0, 0}, crate{1};
+    EXPECT_TRUE(outlineRect(editor.scene(), ball, w, h));
+    EXPECT_TRUE(handleLayout(editor.scene(), ball, HandleMode::Move, w, h));
+    ASSERT_TRUE(editor.setSolo(crate, true).empty());
+    EXPECT_FALSE(outlineRect(editor.scene(), ball, w, h));
+    EXPECT_FALSE(handleLayout(editor.scene(), ball, HandleMode::Move, w, h));
+    EXPECT_TRUE(outlineRect(editor.scene(), crate, w, h)) << "the soloed one keeps them";
+    ASSERT_TRUE(editor.setSolo(crate, false).empty());
+    ASSERT_TRUE(editor.setHidden({0}, true).empty());
+    EXPECT_FALSE(outlineRect(editor.scene(), ball, w, h)) << "inside a hidden group";
+    EXPECT_FALSE(handleLayout(editor.scene(), ball, HandleMode::Rotate, w, h));
 }
 
 }  // namespace
