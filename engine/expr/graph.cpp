@@ -14,6 +14,10 @@ constexpr std::array<OpInfo, 20> kOps = {{
 }};
 static_assert(kOps.size() == static_cast<std::size_t>(Op::SelectEqual) + 1, "one OpInfo per Op");
 
+std::size_t bitsOf(const mpq_class& q) {
+  return mpz_sizeinbase(q.get_num_mpz_t(), 2) + mpz_sizeinbase(q.get_den_mpz_t(), 2);
+}
+
 mpq_class floorOf(const mpq_class& q) {
   mpz_class f;
   mpz_fdiv_q(f.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
@@ -134,8 +138,19 @@ NodeId Graph::neg(NodeId a) {
 // The rewrites below are exact in IEEE arithmetic (a + -b == a - b,
 // -a * b == -(a * b)), apart from the sign of zero and from x*0 = 0 for an
 // infinite x, which symbolic differentiation relies on.
+void Graph::checkFoldedBits(std::size_t bits) const {
+  if (bits <= kMaxConstantBits) return;
+  throw Error(origin_.where, "the number is too large to compute exactly (about " +
+                                 std::to_string(static_cast<std::uint64_t>(static_cast<double>(bits) * 0.30103)) +
+                                 " digits; at most " +
+                                 std::to_string(static_cast<std::uint64_t>(kMaxConstantBits * 0.30103)) + ")");
+}
+
 NodeId Graph::add(NodeId a, NodeId b) {
-  if (isConstant(a) && isConstant(b)) return constant(exactValue(a) + exactValue(b));
+  if (isConstant(a) && isConstant(b)) {
+    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    return constant(exactValue(a) + exactValue(b));
+  }
   if (isConstant(a, 0)) return b;
   if (isConstant(b, 0)) return a;
   if (isNegative(b)) return sub(a, operand(b));
@@ -144,7 +159,10 @@ NodeId Graph::add(NodeId a, NodeId b) {
 }
 
 NodeId Graph::sub(NodeId a, NodeId b) {
-  if (isConstant(a) && isConstant(b)) return constant(exactValue(a) - exactValue(b));
+  if (isConstant(a) && isConstant(b)) {
+    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    return constant(exactValue(a) - exactValue(b));
+  }
   if (isConstant(b, 0)) return a;
   if (isConstant(a, 0)) return neg(b);
   if (isNegative(b)) return add(a, operand(b));
@@ -152,7 +170,10 @@ NodeId Graph::sub(NodeId a, NodeId b) {
 }
 
 NodeId Graph::mul(NodeId a, NodeId b) {
-  if (isConstant(a) && isConstant(b)) return constant(exactValue(a) * exactValue(b));
+  if (isConstant(a) && isConstant(b)) {
+    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    return constant(exactValue(a) * exactValue(b));
+  }
   if (isConstant(a, 0) || isConstant(b, 0)) return constant(0);
   if (isConstant(a, 1)) return b;
   if (isConstant(b, 1)) return a;
@@ -164,7 +185,10 @@ NodeId Graph::mul(NodeId a, NodeId b) {
 }
 
 NodeId Graph::div(NodeId a, NodeId b) {
-  if (isConstant(a) && isConstant(b) && !isConstant(b, 0)) return constant(exactValue(a) / exactValue(b));
+  if (isConstant(a) && isConstant(b) && !isConstant(b, 0)) {
+    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    return constant(exactValue(a) / exactValue(b));
+  }
   if (isConstant(b, 1)) return a;
   if (isConstant(b, -1)) return neg(a);
   if (isConstant(a, 0) && !isConstant(b, 0)) return a;

@@ -65,6 +65,14 @@ struct Origin {
 // float and double evaluators and GLSL agree (llvmpipe flushes denormals).
 const mpq_class& tinyPositive();
 
+// Constants are folded exactly (GMP rationals). Powers of powers of constants
+// grow without bound ((3 - 5^65536)^65535 needs some 10^10 bits: gigabytes and
+// minutes), so a folded constant may have at most this many bits in its
+// numerator and denominator together, checked before it is computed: about
+// 315,000 decimal digits, far beyond any literal (100 digits, exponent 1000)
+// and 5^65536 (152,000 bits).
+inline constexpr std::size_t kMaxConstantBits = std::size_t(1) << 20;
+
 class Graph {
  public:
   // Inputs, numbered in the order they are declared; names are for messages
@@ -136,6 +144,9 @@ class Graph {
   std::vector<double> constantValues_;
   std::map<mpq_class, std::uint32_t> constantIndex_;
   std::unordered_map<Key, NodeId, KeyHash> nodeIndex_;
+  // Throws Error at the current origin when a folded constant would have more
+  // than kMaxConstantBits bits.
+  void checkFoldedBits(std::size_t bits) const;
   Origin origin_;
 };
 
