@@ -53,8 +53,7 @@ std::unordered_map<ImGuiID, TypingSession>& typingSessions() {
 
 // What ImGui's CharsScientific filter lets into a number field.
 bool keptByNumberFilter(ImWchar c) {
-    return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-' || c == '*' || c == '/' || c == 'e' ||
-           c == 'E';
+    return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-' || c == '*' || c == '/' || c == 'e' || c == 'E';
 }
 
 struct TypedField {
@@ -71,7 +70,8 @@ TypedField observeTyping(ImGuiID id, double value) {
     if (session.frame < frame - 1) session = TypingSession{value, {}, 0, frame};  // a session left without ending
     session.frame = frame;
     for (ImWchar c : ImGui::GetIO().InputQueueCharacters) {
-        if (c >= 32 && !keptByNumberFilter(c) && session.dropped.size() < 40) session.dropped += static_cast<char>(c < 127 ? c : '?');
+        if (c >= 32 && !keptByNumberFilter(c) && session.dropped.size() < 40)
+            session.dropped += static_cast<char>(c < 127 ? c : '?');
     }
     ImGuiInputTextState* state = ImGui::GetInputTextState(id);
     if (!state || state->TextA.Size == 0) return {id, std::string()};

@@ -144,7 +144,8 @@ void drawPolynomialPanel(Editor& editor, UiState& ui, PolynomialPanelState& stat
     // overlay and of the status bar below (it ran under it, hiding Add to scene)
     constexpr float kMargin = 16;
     ImGui::SetNextWindowPos(ImVec2(areaMin.x + kMargin, areaMax.y - kMargin), ImGuiCond_FirstUseEver, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(520, std::min(420.0f, areaMax.y - areaMin.y - 2 * kMargin)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(520, std::min(420.0f, areaMax.y - areaMin.y - 2 * kMargin)),
+                             ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Polynomial", &state.open)) {
         bool running = state.job.running();
         ImGui::BeginDisabled(running);

@@ -5,9 +5,9 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "app/user_files/user_paths.h"
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
-#include "app/user_files/user_paths.h"
 
 namespace sdfwb::app::gui {
 
@@ -253,8 +253,9 @@ std::string restoreAutosave(AppState& app) {
         // the work is restored all the same, as a new scene
     }
     app.files.offerRestore = false;
-    app.ui.info("restored unsaved work" + (app.files.current.empty() ? std::string() : " of " + app.files.current.string()) +
-                " from " + autosavePath().string());
+    app.ui.info("restored unsaved work" +
+                (app.files.current.empty() ? std::string() : " of " + app.files.current.string()) + " from " +
+                autosavePath().string());
     return "";
 }
 

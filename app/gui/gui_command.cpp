@@ -144,7 +144,8 @@ void runFrame(AppState& app, Host& host) {
     app.snapshot.poll();
     for (std::string outcome : {app.snapshot.takeOutcome(), app.meshExport.takeOutcome()}) {
         // "wrote ...", "... cancelled; nothing written" or "... failed: ...": only a failure is a problem
-        if (!outcome.empty()) (outcome.find(" failed: ") == std::string::npos ? app.ui.info(outcome) : app.ui.error(outcome));
+        if (!outcome.empty())
+            (outcome.find(" failed: ") == std::string::npos ? app.ui.info(outcome) : app.ui.error(outcome));
     }
     autosaveTick(app, start);
     noteViewportError(app);

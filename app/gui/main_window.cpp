@@ -358,13 +358,16 @@ void statusBar(AppState& app, ImVec2 origin, float width, float height) {
             ImGui::PopStyleColor();
         } else if (open > 0) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.5f, 1));
-            ui::oneLineText(std::to_string(open) + (open == 1 ? " problem: click here to list it" : " problems: click here to list them"),
+            ui::oneLineText(std::to_string(open) +
+                                (open == 1 ? " problem: click here to list it" : " problems: click here to list them"),
                             room);
             ImGui::PopStyleColor();
         } else {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ui::oneLineText("Drag in the viewport to orbit, right-drag to pan, wheel to zoom; drag a handle of the selection to move it.",
-                            room);
+            ui::oneLineText(
+                "Drag in the viewport to orbit, right-drag to pan, wheel to zoom; drag a handle of the selection to "
+                "move it.",
+                room);
             ImGui::PopStyleColor();
         }
         if (ImGui::IsItemHovered() && open > 0) ImGui::SetTooltip("Click to list the problems");

@@ -134,8 +134,9 @@ TEST_F(GuiHostileTest, TheAutosaveOfAKilledWindowIsRestoredOnTheNextStart) {
     std::ofstream(dir / "script.txt") << "restore\nsave recovered.json\nquit\n";
     test::runGuiScript(dir);
     ASSERT_FALSE(HasFailure());
-    EXPECT_NE(test::readAll(dir / "run.log").find("restored unsaved work of " + fs::absolute(dir / "scene.json").string()),
-              std::string::npos)
+    EXPECT_NE(
+        test::readAll(dir / "run.log").find("restored unsaved work of " + fs::absolute(dir / "scene.json").string()),
+        std::string::npos)
         << "the work comes back as the file's it was opened from: " << test::readAll(dir / "run.log");
     EXPECT_EQ(scene::loadSceneFile(dir / "recovered.json"), editedDefaultScene());
     EXPECT_FALSE(fs::exists(autosave)) << "saving the restored work keeps the autosave";
