@@ -141,7 +141,9 @@ TEST(Pick, LargeScenesPickWithoutBuildingAGrid) {
     image::Frame frame = cpu::renderCpu(program).frame;
     for (size_t i = 0; i < picks.size(); ++i) {
         ASSERT_EQ(picks[i].hit, frame.coverage[i] > 0) << "pixel " << i;
-        if (picks[i].hit) EXPECT_EQ(static_cast<float>(picks[i].t), frame.depth[i]) << "pixel " << i;
+        if (picks[i].hit) {
+            EXPECT_EQ(static_cast<float>(picks[i].t), frame.depth[i]) << "pixel " << i;
+        }
     }
 }
 
