@@ -135,20 +135,22 @@ NodeId Graph::neg(NodeId a) {
   return make(Op::Neg, {a});
 }
 
+void Graph::checkFoldable(NodeId a, NodeId b) const {
+  const std::size_t bits = bitsOf(exactValue(a)) + bitsOf(exactValue(b));
+  if (bits <= kMaxConstantBits) return;
+  constexpr double kDigitsPerBit = 0.30103;  // log10(2)
+  throw Error(origin_.where, "the number is too large to compute exactly (about " +
+                                 std::to_string(static_cast<std::uint64_t>(static_cast<double>(bits) * kDigitsPerBit)) +
+                                 " digits; at most " +
+                                 std::to_string(static_cast<std::uint64_t>(kMaxConstantBits * kDigitsPerBit)) + ")");
+}
+
 // The rewrites below are exact in IEEE arithmetic (a + -b == a - b,
 // -a * b == -(a * b)), apart from the sign of zero and from x*0 = 0 for an
 // infinite x, which symbolic differentiation relies on.
-void Graph::checkFoldedBits(std::size_t bits) const {
-  if (bits <= kMaxConstantBits) return;
-  throw Error(origin_.where, "the number is too large to compute exactly (about " +
-                                 std::to_string(static_cast<std::uint64_t>(static_cast<double>(bits) * 0.30103)) +
-                                 " digits; at most " +
-                                 std::to_string(static_cast<std::uint64_t>(kMaxConstantBits * 0.30103)) + ")");
-}
-
 NodeId Graph::add(NodeId a, NodeId b) {
   if (isConstant(a) && isConstant(b)) {
-    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    checkFoldable(a, b);
     return constant(exactValue(a) + exactValue(b));
   }
   if (isConstant(a, 0)) return b;
@@ -160,7 +162,7 @@ NodeId Graph::add(NodeId a, NodeId b) {
 
 NodeId Graph::sub(NodeId a, NodeId b) {
   if (isConstant(a) && isConstant(b)) {
-    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    checkFoldable(a, b);
     return constant(exactValue(a) - exactValue(b));
   }
   if (isConstant(b, 0)) return a;
@@ -171,7 +173,7 @@ NodeId Graph::sub(NodeId a, NodeId b) {
 
 NodeId Graph::mul(NodeId a, NodeId b) {
   if (isConstant(a) && isConstant(b)) {
-    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    checkFoldable(a, b);
     return constant(exactValue(a) * exactValue(b));
   }
   if (isConstant(a, 0) || isConstant(b, 0)) return constant(0);
@@ -186,7 +188,7 @@ NodeId Graph::mul(NodeId a, NodeId b) {
 
 NodeId Graph::div(NodeId a, NodeId b) {
   if (isConstant(a) && isConstant(b) && !isConstant(b, 0)) {
-    checkFoldedBits(bitsOf(exactValue(a)) + bitsOf(exactValue(b)));
+    checkFoldable(a, b);
     return constant(exactValue(a) / exactValue(b));
   }
   if (isConstant(b, 1)) return a;

@@ -136,6 +136,9 @@ class Graph {
   NodeId make(Op op, std::array<NodeId, 4> args, std::uint32_t index = 0);
   bool isNegative(NodeId id) const { return nodes_[id].op == Op::Neg; }
   NodeId operand(NodeId id) const { return nodes_[id].args[0]; }
+  // Throws Error at the current origin when folding constants a and b could
+  // give more than kMaxConstantBits bits.
+  void checkFoldable(NodeId a, NodeId b) const;
 
   std::vector<std::string> variables_;
   std::vector<Node> nodes_;
@@ -144,9 +147,6 @@ class Graph {
   std::vector<double> constantValues_;
   std::map<mpq_class, std::uint32_t> constantIndex_;
   std::unordered_map<Key, NodeId, KeyHash> nodeIndex_;
-  // Throws Error at the current origin when a folded constant would have more
-  // than kMaxConstantBits bits.
-  void checkFoldedBits(std::size_t bits) const;
   Origin origin_;
 };
 
