@@ -41,6 +41,7 @@ int runParity(const ParityArguments& a) {
         std::string polynomialNotes;
         for (const auto& file : files) {
             scene::Scene scene = scene::loadSceneFile(file);
+            requireSceneFiles(scene, file.string());
             parity::ParityOptions options{.width = width, .height = height, .aa = a.aa, .reference = isHardCase(file)};
             std::optional<scene::Scene> intended = options.reference ? parity::loadIntendedScene(file) : std::nullopt;
             options.intended = intended ? &*intended : nullptr;

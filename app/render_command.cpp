@@ -60,6 +60,7 @@ int runRender(const RenderArguments& a) {
         request.dumpShader = a.dumpShader;
 
         scene::Scene scene = loadSceneArgument(a.scene);
+        requireSceneFiles(scene, a.scene);
         program::Program program = program::compileScene(scene, options);
         checkRenderFitsInMemory(program.width, program.height);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "program/environment.h"
 #include "scene/scene_json.h"
 
 namespace sdfwb::app {
@@ -12,6 +13,13 @@ scene::Scene loadSceneArgument(const std::string& argument) {
         return scene::parseScene(defaultSceneJson());
     }
     return scene::loadSceneFile(argument);
+}
+
+void requireSceneFiles(const scene::Scene& scene, const std::string& source) {
+    std::vector<std::string> problems = program::environmentProblems(scene);
+    if (problems.empty()) return;
+    for (std::string& problem : problems) problem = (source.empty() ? "default" : source) + ": " + problem;
+    throw scene::SceneError(problems);
 }
 
 std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths) {

@@ -18,6 +18,11 @@ std::string_view defaultSceneJson();
 // Throws scene::SceneError.
 scene::Scene loadSceneArgument(const std::string& argument);
 
+// Throws scene::SceneError, its problems prefixed with `source`, when a file
+// the scene names cannot be read (an environment map's image); commands that
+// render call it after loading, the editor shows these problems instead.
+void requireSceneFiles(const scene::Scene& scene, const std::string& source);
+
 // The .json files among `paths` in their order, each folder's searched
 // recursively and sorted.
 std::vector<std::filesystem::path> sceneFiles(const std::vector<std::string>& paths);

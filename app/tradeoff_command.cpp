@@ -96,7 +96,10 @@ int runTradeoff(const TradeoffArguments& a) {
             io::checkCanCreate(fs::path(a.plotDir) / "plot.png");
         }
         std::vector<tradeoff::SceneInput> scenes;
-        for (const fs::path& file : files) scenes.push_back({file.generic_string(), scene::loadSceneFile(file)});
+        for (const fs::path& file : files) {
+            scenes.push_back({file.generic_string(), scene::loadSceneFile(file)});
+            requireSceneFiles(scenes.back().scene, file.generic_string());
+        }
 
         std::vector<std::unique_ptr<render::Backend>> owned;
         if (a.backend != "gl") owned.push_back(makeBackend(Backend::Cpu));

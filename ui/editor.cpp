@@ -298,11 +298,20 @@ Problems Editor::setView(const scene::Camera& camera) {
     return {};
 }
 
+void Editor::setDirectory(std::string directory) {
+    if (scene_.directory.path != directory) {
+        scene_.directory.path = std::move(directory);
+        ++revision_;
+    }
+}
+
 void Editor::restore(Step& from, std::vector<Step>& to) {
-    to.push_back({std::move(scene_), selection_, from.label, {}, stateId_});
     scene::Camera view = scene_.camera;
+    scene::SceneDirectory directory = scene_.directory;
+    to.push_back({std::move(scene_), selection_, from.label, {}, stateId_});
     scene_ = std::move(from.scene);
     scene_.camera = view;
+    scene_.directory = std::move(directory);
     stateId_ = from.stateId;
     ++revision_;
     mergeOpen_ = false;

@@ -56,6 +56,9 @@ public:
     // the current view. Refused, with the loader's words, for a camera the
     // loader would not accept (distance <= 0, a field of view out of range).
     Problems setView(const scene::Camera& camera);
+    // Sets the folder the scene's relative file names resolve against (its
+    // file's, when opened or saved): likewise not an edit, kept by undo and redo.
+    void setDirectory(std::string directory);
 
     // --- Node edits (paths are JSON node paths) ---
     Problems setField(const NodePath& path, std::string_view field, scene::FieldValue value,

@@ -2,7 +2,12 @@
 // "render" and "environment" objects, one widget per row of their settings
 // tables (scene/settings_table.h).
 
+#include <algorithm>
+
 #include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "program/environment.h"
 
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
@@ -27,6 +32,18 @@ void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
     ImGui::PopItemWidth();
 }
 
+namespace {
+
+// The map's files that cannot be read, in red under their fields (the map
+// shows a magenta checkerboard meanwhile), as the last finished check found.
+void drawEnvironmentFileProblems(const Editor& editor, UiState& ui) {
+    ui.environmentCheck->request(editor.scene());
+    if (ui.environmentCheck->pending()) ImGui::TextDisabled("reading the map's images...");
+    for (const std::string& problem : ui.environmentCheck->problems()) problemText(problem);
+}
+
+}  // namespace
+
 void drawEnvironmentPanel(Editor& editor, UiState& ui) {
     scene::Environment e = editor.scene().environment;
     auto set = [&](WidgetEdit edit, const std::string& path) {
@@ -34,9 +51,26 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
             editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; }, path);
     };
     ImGui::PushItemWidth(-130);
+    std::vector<program::EnvironmentFile> files = program::environmentFiles(editor.scene());
     for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) {
-        set(settingWidget(row, e), "environment." + std::string(row.key));
+        std::string path = "environment." + std::string(row.key);
+        if (row.type != scene::SettingType::Text) {
+            set(settingWidget(row, e), path);
+            continue;
+        }
+        // only the files the chosen map reads, typed relative to the scene's folder
+        bool used = std::any_of(files.begin(), files.end(), [&](const auto& f) { return f.key == row.key; });
+        if (!used) continue;
+        std::string& name = e.*std::get<std::string scene::Environment::*>(row.member);
+        ImGui::InputTextWithHint(std::string(row.label).c_str(), "image file, relative to the scene", &name);
+        if (ImGui::IsItemHovered()) {
+            ImGui::SetTooltip("JSON key %s\nPNG, JPEG, TIFF or EXR; relative to the scene file's folder\n"
+                              "Enter or leaving the field applies it",
+                              std::string(row.key).c_str());
+        }
+        if (ImGui::IsItemDeactivatedAfterEdit()) set({true, true}, path);
     }
+    drawEnvironmentFileProblems(editor, ui);
     ImGui::Separator();
     ImGui::TextDisabled("Ground plane");
     for (const scene::Setting<scene::Ground>& row : scene::groundSettings()) {

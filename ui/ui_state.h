@@ -5,11 +5,13 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/node_kinds.h"
+#include "ui/environment_check.h"
 
 namespace sdfwb::ui {
 
@@ -52,6 +54,8 @@ struct UiState {
     std::uint64_t problemsCheckedAt = 0;  // the editor revision updateProblems last checked
     // Problems of the last refused inspector edit, shown inline under it.
     std::vector<std::string> inspectorProblems;
+    // The environment tab's image files, checked on a worker when they change.
+    std::shared_ptr<EnvironmentCheck> environmentCheck = std::make_shared<EnvironmentCheck>();
 
     // Formulas being typed in the Add menu, by node kind name.
     std::map<std::string, std::string> addFormulaDrafts;

@@ -7,6 +7,7 @@
 
 #include "app/user_files/user_paths.h"
 #include "io/atomic_file.h"
+#include "program/environment.h"
 #include "scene/scene_json.h"
 
 namespace sdfwb::app::gui {
@@ -28,7 +29,12 @@ std::string openScene(AppState& app, const fs::path& path) {
 
 std::string saveScene(AppState& app, const fs::path& path) {
     try {
+        // saved elsewhere, the scene's image files keep their names relative to its new folder
+        scene::Scene moved = app.editor.scene();
+        program::moveSceneDirectory(moved, fs::absolute(path).parent_path());
+        if (moved != app.editor.scene()) app.editor.apply("Save in another folder", [&](scene::Scene& s) { s = moved; });
         scene::saveSceneFile(app.editor.scene(), path);
+        app.editor.setDirectory(fs::absolute(path).parent_path().string());
     } catch (const std::exception& error) {
         app.ui.error(error.what());
         return error.what();
@@ -245,13 +251,16 @@ std::string restoreAutosave(AppState& app) {
         app.ui.error("cannot restore the autosave: " + problem);
         return problem;
     }
-    app.editor.apply("Restore", [](scene::Scene&) {});  // restored work is unsaved work
     app.files.current.clear();
     try {
         if (fs::exists(autosaveSourcePath())) app.files.current = io::readTextFile(autosaveSourcePath(), 1 << 16);
     } catch (const std::exception&) {
         // the work is restored all the same, as a new scene
     }
+    // restored work is unsaved work, and its file names are relative to its
+    // own file's folder (an untitled scene's: the working directory), not the autosave's
+    app.editor.apply("Restore", [](scene::Scene&) {});
+    app.editor.setDirectory(app.files.current.empty() ? std::string() : app.files.current.parent_path().string());
     app.files.offerRestore = false;
     app.ui.info("restored unsaved work" +
                 (app.files.current.empty() ? std::string() : " of " + app.files.current.string()) + " from " +

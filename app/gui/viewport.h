@@ -23,6 +23,7 @@
 #include "glcontext/gl_context.h"
 #include "image/compare.h"
 #include "jobs/job_queue.h"
+#include "program/environment.h"
 #include "render/render_backend.h"
 #include "scene/scene.h"
 #include "ui/program_compiler.h"
@@ -97,7 +98,9 @@ private:
             : source(source),
               backend(std::move(backend)),
               texture(gl),
-              compiler(std::make_unique<ui::ProgramCompiler<LaneCompile>>(compiles)) {}
+              // the worker also reads the environment's images, which the GL
+              // backend would otherwise read on the UI thread at its first render
+              compiler(std::make_unique<ui::ProgramCompiler<LaneCompile>>(compiles, program::compileSceneReadingImages)) {}
         Source source;
         std::unique_ptr<render::Backend> backend;
         DisplayTexture texture;

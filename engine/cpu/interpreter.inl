@@ -146,12 +146,20 @@ struct SampleDriver {
     const program::Program& program;
     const prune::PruneGrid* grid;
     const vec4* params;
+    const image::EnvironmentImages* environment;  // null: the background colour
     Scratch& scratch;
 
     vec4 P(int slot) const { return params[slot]; }
     Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p); }
     bool secondaryRays() const { return program.secondaryRays; }
+    bool environmentMap() const { return environment != nullptr; }
+    // Out of range (a NaN direction's texel) reads zero, as texelFetch does.
+    vec4 T(int i) const {
+        bool inside = environment && i >= 0 && static_cast<size_t>(i) < environment->texels.size();
+        return inside ? vec4(environment->texels[static_cast<size_t>(i)]) : vec4(real(0));
+    }
 
+#include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
 };
 
@@ -159,6 +167,8 @@ struct SampleDriver {
 // equals the whole program in its cell); a grid costs seconds to build on a
 // large scene and pays back only over many rays, so single rays and point
 // queries (picking, placement, the readout, on the UI thread) take the whole.
+// Those also see the background colour instead of an environment map's
+// images, which would have to be read from disk first.
 enum class FieldSource { Pruned, Whole };
 
 // The scene's constants converted to this precision once per render.
@@ -170,11 +180,17 @@ struct Kernel {
     const program::Program& program;
     std::shared_ptr<const prune::PruneGrid> grid;
     std::vector<vec4> params;  // the program's, then the grid's
+    std::shared_ptr<const image::EnvironmentImages> environment;
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p), grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
+        }
+        if (source == FieldSource::Pruned) {
+            program::ResolvedEnvironment resolved = program::resolveEnvironment(p);
+            environment = resolved.images;
+            params[ENVIRONMENT_SLOT] = vec4(resolved.slot);
         }
         if (grid) {
             for (const glm::dvec4& v : grid->extraParams) {
@@ -191,7 +207,7 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        TraceState s = SampleDriver{program, grid.get(), params.data(), scratch}.traceSample(
+        TraceState s = SampleDriver{program, grid.get(), params.data(), environment.get(), scratch}.traceSample(
             px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }

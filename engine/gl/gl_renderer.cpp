@@ -10,6 +10,8 @@
 #include "gl/shader_generator.h"
 #include "glcontext/gl_debug.h"
 #include "glcontext/shader_program.h"
+#include "program/environment.h"
+#include "sdf/shared.h"
 
 namespace sdfwb::gl {
 
@@ -27,8 +29,10 @@ struct GlRenderer::CachedProgram {
 
 namespace {
 
-const char* const kUniformNames[] = {"uParams", "uResolution", "uSubsample", "uAA",
-                                     "uPruneNodes", "uFoldSpans", "uFoldBlocks"};
+const char* const kUniformNames[] = {"uParams",     "uResolution", "uSubsample", "uAA",
+                                     "uPruneNodes", "uFoldSpans",  "uFoldBlocks", "uTexels"};
+// Texture units: the parameters 0, the fold loop's lists 1 to 3, the environment's texels 4.
+constexpr int kTexelUnit = 4;
 const char* const kFoldSamplers[] = {"uPruneNodes", "uFoldSpans", "uFoldBlocks"};
 
 }  // namespace
@@ -37,7 +41,9 @@ GlRenderer::GlRenderer(const glcontext::GlFunctions& gl)
     : gl_(gl),
       paramBuffer_(glcontext::makeBuffer(gl)),
       paramTexture_(glcontext::makeTexture(gl)),
-      vertexArray_(glcontext::makeVertexArray(gl)) {
+      vertexArray_(glcontext::makeVertexArray(gl)),
+      texelBuffer_(glcontext::makeBuffer(gl)),
+      texelTexture_(glcontext::makeTexture(gl)) {
     for (int i = 0; i < 3; ++i) {
         foldBuffers_[i] = glcontext::makeBuffer(gl);
         foldTextures_[i] = glcontext::makeTexture(gl);
@@ -137,6 +143,13 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
             gl_.TexBuffer(GL_TEXTURE_BUFFER, formats[t], foldBuffers_[t].get());
         }
     }
+    program::ResolvedEnvironment environment = program::resolveEnvironment(program);
+    if (environment.images) {
+        for (int i = 0; i < 4; ++i) {
+            params[static_cast<size_t>(sdf::f32::ENVIRONMENT_SLOT * 4 + i)] = static_cast<float>(environment.slot[i]);
+        }
+        uploadEnvironment(environment.images);
+    }
     if (params.empty()) params.assign(4, 0.0f);  // a buffer texture may not be empty
     gl_.BindBuffer(GL_TEXTURE_BUFFER, paramBuffer_.get());
     gl_.BufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(params.size() * sizeof(float)), params.data(),
@@ -152,8 +165,28 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     for (int t = 0; t < 3; ++t) {
         if (run) gl_.Uniform1i(cached.uniform(kFoldSamplers[t]), 1 + t);
     }
+    if (environment.images) gl_.Uniform1i(cached.uniform("uTexels"), kTexelUnit);
     gl_.Uniform2f(cached.uniform("uResolution"), static_cast<float>(program.width), static_cast<float>(program.height));
     gl_.Uniform1i(cached.uniform("uAA"), program.aa);
+}
+
+void GlRenderer::uploadEnvironment(const std::shared_ptr<const image::EnvironmentImages>& images) {
+    if (images != uploadedEnvironment_) {
+        GLint limit = 0;
+        gl_.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
+        if (images->texels.size() > static_cast<size_t>(limit)) {
+            throw GlError("GL backend: the environment map's " + std::to_string(images->texels.size()) +
+                          " texels exceed this driver's buffer texture limit of " + std::to_string(limit));
+        }
+        gl_.BindBuffer(GL_TEXTURE_BUFFER, texelBuffer_.get());
+        gl_.BufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(images->texels.size() * sizeof(glm::vec4)),
+                       images->texels.data(), GL_STATIC_DRAW);
+        gl_.BindBuffer(GL_TEXTURE_BUFFER, 0);
+        uploadedEnvironment_ = images;
+    }
+    gl_.ActiveTexture(GL_TEXTURE0 + kTexelUnit);
+    gl_.BindTexture(GL_TEXTURE_BUFFER, texelTexture_.get());
+    gl_.TexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, texelBuffer_.get());
 }
 
 bool GlRenderer::hasProgram(const program::Program& program) const {

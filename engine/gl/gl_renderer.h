@@ -15,6 +15,7 @@
 
 #include "glcontext/gl_functions.h"
 #include "glcontext/gl_object.h"
+#include "image/environment_images.h"
 #include "image/image.h"
 #include "program/program.h"
 #include "render/render_control.h"
@@ -85,6 +86,8 @@ private:
     bool waitForGrid_ = true;
     const CachedProgram& programFor(const program::Program& program);
     void uploadParameters(const program::Program& program, const CachedProgram& cached);
+    // Uploads the environment map's texels unless they are the ones last uploaded.
+    void uploadEnvironment(const std::shared_ptr<const image::EnvironmentImages>& images);
     const CachedProgram* bound_ = nullptr;
 
     glcontext::GlFunctions gl_;
@@ -92,6 +95,9 @@ private:
     glcontext::GlObject paramBuffer_;
     glcontext::GlObject paramTexture_;
     glcontext::GlObject vertexArray_;
+    glcontext::GlObject texelBuffer_;
+    glcontext::GlObject texelTexture_;
+    std::shared_ptr<const image::EnvironmentImages> uploadedEnvironment_;
     // a fold loop's prune-grid inputs (shader_generator.cpp): nodes, spans, blocks
     glcontext::GlObject foldBuffers_[3];
     glcontext::GlObject foldTextures_[3];

@@ -26,6 +26,14 @@ Material M(int slot) {
 }
 )";
 
+// The environment map's texels (program/environment.h), read by
+// environment_lookup.glsl; scenes without a map read none.
+constexpr std::string_view kTexels = R"(
+uniform samplerBuffer uTexels;
+vec4 T(int i) { return texelFetch(uTexels, i); }
+)";
+constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
+
 // The per-pass uniforms and the outputs; names match gl_renderer.cpp.
 // Everything else the tracer reads is in the parameter buffer.
 constexpr std::string_view kInterface = R"(
@@ -190,12 +198,16 @@ std::string generateMapFunction(const program::Program& program) {
 }
 
 std::string generateFragmentShader(const program::Program& program) {
+    const bool environmentMap = program.environmentKind != sdf::f32::ENVIRONMENT_COLOR;
     std::ostringstream out;
     out << "#version 330 core\n"
         << sdf::glslPrelude() << sdf::glslLibrary() << kInterface << kParameters << generateMapFunction(program)
         // a constant: scenes without mirrors or glass compile no ray tree
         << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n"
-        << sdf::glslSampleDriver() << kMain;
+        // likewise scenes without an environment map read no texels
+        << (environmentMap ? kTexels : kNoTexels) << "bool environmentMap() { return "
+        << (environmentMap ? "true" : "false") << "; }\n"
+        << sdf::glslEnvironmentLookup() << sdf::glslSampleDriver() << kMain;
     return out.str();
 }
 

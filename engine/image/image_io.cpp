@@ -103,12 +103,22 @@ void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, con
     });
 }
 
-Image readImage(const std::filesystem::path& path) {
+Image readImage(const std::filesystem::path& path, std::size_t maxPixels) {
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
     }
     const OIIO::ImageSpec& spec = in->spec();
+    if (spec.nchannels <= 0 || spec.nchannels > 64) {
+        throw std::runtime_error("cannot read image " + path.string() + ": it has " + std::to_string(spec.nchannels) +
+                                 " channels (at most 64 are read)");
+    }
+    if (spec.width <= 0 || spec.height <= 0 ||
+        static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) > maxPixels) {
+        throw std::runtime_error("cannot read image " + path.string() + ": it is " + std::to_string(spec.width) +
+                                 " x " + std::to_string(spec.height) + " pixels, more than the " +
+                                 std::to_string(maxPixels) + " allowed here");
+    }
     Image image(spec.width, spec.height);
     int channels = spec.nchannels;
     bool eightBit = spec.format == OIIO::TypeDesc::UINT8;

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "program/bounds.h"
+#include "program/environment.h"
 #include "expr/derivative.h"
 #include "expr/formula.h"
 #include "program/rotation.h"
@@ -40,6 +41,10 @@ static_assert(static_cast<int>(scene::TexturePattern::None) == codes::TEXTURE_NO
 static_assert(static_cast<int>(scene::TexturePattern::Checker) == codes::TEXTURE_CHECKER);
 static_assert(static_cast<int>(scene::TexturePattern::Stripes) == codes::TEXTURE_STRIPES);
 static_assert(static_cast<int>(scene::TexturePattern::Noise) == codes::TEXTURE_NOISE);
+static_assert(static_cast<int>(scene::EnvironmentMapKind::Color) == codes::ENVIRONMENT_COLOR);
+static_assert(static_cast<int>(scene::EnvironmentMapKind::Equirect) == codes::ENVIRONMENT_EQUIRECT);
+static_assert(static_cast<int>(scene::EnvironmentMapKind::Sphere) == codes::ENVIRONMENT_SPHERE);
+static_assert(static_cast<int>(scene::EnvironmentMapKind::Box) == codes::ENVIRONMENT_BOX);
 static_assert(static_cast<int>(scene::SmoothVariant::Polynomial) == codes::SMOOTH_POLYNOMIAL);
 static_assert(static_cast<int>(scene::SmoothVariant::Exponential) == codes::SMOOTH_EXPONENTIAL);
 static_assert(static_cast<int>(scene::SmoothVariant::Power) == codes::SMOOTH_POWER);
@@ -577,6 +582,9 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
         });
     t.ambientLight = scene.environment.ambient;
     t.background = scene.environment.background;
+    program.environmentKind = static_cast<int>(scene.environment.map);
+    for (const EnvironmentFile& file : environmentFiles(scene)) program.environmentFiles.push_back(file.path.string());
+    program.environmentIntensity = scene.environment.intensity;
     for (const scene::Light& light : scene.lights) {
         program.lights.push_back({glm::normalize(light.direction), light.color, light.softness});
     }
@@ -604,6 +612,7 @@ std::uint64_t Program::structureKey() const {
     mix(pointRegisters);
     mix(sampleRegisters);
     mix(secondaryRays);
+    mix(environmentKind != shared::ENVIRONMENT_COLOR);
     mix(result);
     for (const FormulaCode& formula : formulas) {
         mix(formula.withGradient);

@@ -92,6 +92,14 @@ struct Program {
     // trace ray trees (sdf/glsl/ray_tree.glsl); structural, as GLSL compiles
     // the tree only then.
     bool secondaryRays = false;
+    // The environment map (sdf/glsl/environment.glsl): ENVIRONMENT_* and its
+    // image files, resolved against the scene's folder. The backends read the
+    // images when they render (program/environment.h), not the compiler, so a
+    // compile stays free of file reads; they also fill ENVIRONMENT_SLOT, whose
+    // image size only the files know. Structural: whether there is an image.
+    int environmentKind = 0;
+    std::vector<std::string> environmentFiles;
+    double environmentIntensity = 1.0;
     int width = 0;
     int height = 0;
     int aa = 1;

@@ -116,6 +116,9 @@ static_assert(std::size(kShadowModeNames) == static_cast<size_t>(ShadowMode::Imp
 static_assert(std::size(kLightingModelNames) == static_cast<size_t>(LightingModel::Phong) + 1);
 static_assert(std::size(kEpsilonModeNames) == static_cast<size_t>(EpsilonMode::Pixel) + 1);
 static_assert(std::size(kGroundPatternNames) == static_cast<size_t>(GroundPattern::Grid) + 1);
+enum class EnvironmentMapKind { Color, Equirect, Sphere, Box };
+inline constexpr const char* kEnvironmentMapNames[] = {"color", "equirect", "sphere", "box"};
+static_assert(std::size(kEnvironmentMapNames) == static_cast<size_t>(EnvironmentMapKind::Box) + 1);
 
 struct RenderSettings {
     int width = 960;                 // pixels
@@ -150,12 +153,27 @@ struct Ground {
     bool operator==(const Ground&) const = default;
 };
 
+// The environment map (lecture notes on realism, 1.5): what rays that leave
+// the scene see. Image paths are relative to the scene file's folder.
 struct Environment {
     glm::dvec3 ambient{0.03};               // L_A
     glm::dvec3 background{0.55, 0.65, 0.8};
+    EnvironmentMapKind map = EnvironmentMapKind::Color;
+    std::string image;                      // equirect and sphere maps
+    std::string boxPositiveX, boxNegativeX, boxPositiveY, boxNegativeY, boxPositiveZ, boxNegativeZ;
+    double intensity = 1.0;                 // multiplies the images' radiance
     Ground ground;
 
     bool operator==(const Environment&) const = default;
+};
+
+// The folder that relative file names in a scene (environment images)
+// resolve against: its file's, set where a file is read or saved; "" is the
+// working directory. Not part of the JSON, so not of the scene's value: two
+// scenes equal as documents are equal wherever they were read.
+struct SceneDirectory {
+    std::string path;
+    bool operator==(const SceneDirectory&) const { return true; }
 };
 
 struct Scene {
@@ -167,6 +185,7 @@ struct Scene {
     std::vector<Light> lights{Light{}};
     std::vector<Material> materials;
     Node root = Node::make(NodeKind::Union);
+    SceneDirectory directory;
 
     bool operator==(const Scene&) const = default;
 

@@ -513,7 +513,9 @@ Scene loadSceneFile(const std::filesystem::path& path) {
         throw SceneError({error.what()});
     }
     try {
-        return parseScene(text);
+        Scene scene = parseScene(text);
+        scene.directory.path = std::filesystem::absolute(path).parent_path().string();
+        return scene;
     } catch (const SceneError& error) {
         std::vector<std::string> problems;
         for (const std::string& problem : error.problems()) {

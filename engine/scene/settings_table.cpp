@@ -41,6 +41,15 @@ const Setting<RenderSettings> kRender[] = {
 const Setting<Environment> kEnvironment[] = {
     {"ambient", "ambient light", "", Colour, &Environment::ambient},
     {"background", "background", "", Colour, &Environment::background},
+    {"map", "environment map", "", Choice, choiceMember<&Environment::map>(), Any, 0, 0, kEnvironmentMapNames},
+    {"image", "image", "", Text, &Environment::image},
+    {"box_px", "box +x face", "", Text, &Environment::boxPositiveX},
+    {"box_nx", "box -x face", "", Text, &Environment::boxNegativeX},
+    {"box_py", "box +y face", "", Text, &Environment::boxPositiveY},
+    {"box_ny", "box -y face", "", Text, &Environment::boxNegativeY},
+    {"box_pz", "box +z face", "", Text, &Environment::boxPositiveZ},
+    {"box_nz", "box -z face", "", Text, &Environment::boxNegativeZ},
+    {"intensity", "map intensity", "", Real, &Environment::intensity, NonNegative, 0, 0, {}, {0.01, 0.0, 1e6}},
 };
 
 const Setting<Ground> kGround[] = {

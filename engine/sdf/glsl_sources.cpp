@@ -8,7 +8,8 @@ std::string_view glslPrelude() {
            "#define librarySin formulaSin\n"
            "#define libraryCos formulaCos\n"
            "#define libraryExp2 formulaExp2\n"
-           "#define libraryLog2 formulaLog2\n";
+           "#define libraryLog2 formulaLog2\n"
+           "#define libraryAtan2 formulaAtan2\n";
 }
 
 }  // namespace sdfwb::sdf

@@ -18,6 +18,10 @@ std::string_view glslLibrary();
 // generated map() and P() it calls.
 std::string_view glslSampleDriver();
 
+// The environment map's sampler (sdf/glsl/environment_lookup.glsl), pasted
+// after the backend's texel accessor T(i) and before the driver.
+std::string_view glslEnvironmentLookup();
+
 // The prune grid's cell lookup (sdf/glsl/prune_lookup.glsl), pasted after the
 // backend's node accessor PN(i).
 std::string_view glslPruneLookup();

@@ -66,12 +66,18 @@ SHARED_FN real libraryLog2(real x) {
     if constexpr (sizeof(real) == sizeof(float)) return formulaLog2(x);
     return std::log2(x);
 }
+// And atan2 of the environment map's angles (environment.glsl).
+SHARED_FN real libraryAtan2(real y, real x) {
+    if constexpr (sizeof(real) == sizeof(float)) return formulaAtan2(y, x);
+    return std::atan2(y, x);
+}
 // in dependency order: clang-format off keeps it
 // clang-format off
 #include "sdf/glsl/primitives.glsl"
 #include "sdf/glsl/operators.glsl"
 #include "sdf/glsl/material.glsl"
 #include "sdf/glsl/texture.glsl"
+#include "sdf/glsl/environment.glsl"
 #include "sdf/glsl/camera.glsl"
 #include "sdf/glsl/instructions.glsl"
 #include "sdf/glsl/parameter_blocks.glsl"

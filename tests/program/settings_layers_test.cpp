@@ -52,6 +52,10 @@ TEST(ParameterBlocks, EachPackerUndoesItsUnpacker) {
         "Light", shared::LIGHT_SLOTS, [](const std::vector<dvec4>& q) { return shared::lightFromSlots(q[0], q[1]); },
         [](const shared::Light& l, int i) { return shared::lightSlot(l, i); }, {7});
     expectPackUndoesUnpack(
+        "EnvironmentMap", shared::ENVIRONMENT_SLOTS,
+        [](const std::vector<dvec4>& q) { return shared::environmentFromSlots(q[0]); },
+        [](const shared::EnvironmentMap& e, int i) { return shared::environmentSlot(e, i); });
+    expectPackUndoesUnpack(
         "Material", shared::MATERIAL_SLOTS,
         [](const std::vector<dvec4>& q) { return shared::materialFromSlots(q[0], q[1], q[2], q[3], q[4], q[5]); },
         [](const shared::Material& m, int i) { return shared::materialSlot(m, i); });
@@ -60,7 +64,8 @@ TEST(ParameterBlocks, EachPackerUndoesItsUnpacker) {
 TEST(ParameterBlocks, BlocksFollowEachOtherAheadOfTheMaterials) {
     EXPECT_EQ(shared::CAMERA_SLOT, shared::TRACE_SLOT + shared::TRACE_SLOTS);
     EXPECT_EQ(shared::LIGHT_SLOT, shared::CAMERA_SLOT + shared::CAMERA_SLOTS);
-    EXPECT_EQ(shared::MATERIAL_SLOT, shared::LIGHT_SLOT + shared::MAX_LIGHTS * shared::LIGHT_SLOTS);
+    EXPECT_EQ(shared::ENVIRONMENT_SLOT, shared::LIGHT_SLOT + shared::MAX_LIGHTS * shared::LIGHT_SLOTS);
+    EXPECT_EQ(shared::MATERIAL_SLOT, shared::ENVIRONMENT_SLOT + shared::ENVIRONMENT_SLOTS);
     scene::Scene s;
     EXPECT_EQ(program::compileScene(s).params.size(),
               static_cast<size_t>(shared::MATERIAL_SLOT + shared::MATERIAL_SLOTS));
@@ -135,8 +140,11 @@ void perturb(const scene::Setting<Owner>& row, Owner& owner) {
 
 bool programsDiffer(const scene::Scene& a, const scene::Scene& b) {
     program::Program p = program::compileScene(a), q = program::compileScene(b);
+    // the environment map's block is written by the backends, from these (program/environment.h)
+    bool environment = p.environmentKind != q.environmentKind || p.environmentFiles != q.environmentFiles ||
+                       p.environmentIntensity != q.environmentIntensity;
     return p.params != q.params || p.width != q.width || p.height != q.height || p.aa != q.aa ||
-           p.structureKey() != q.structureKey();
+           p.structureKey() != q.structureKey() || environment;
 }
 
 scene::Scene sceneUsingAMaterial() {

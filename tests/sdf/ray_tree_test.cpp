@@ -74,11 +74,15 @@ TEST(RayTreeDirections, SchlickShareAtNormalIncidenceIsR0) {
 struct AnalyticDriver {
     std::vector<vec4> params;
     std::function<Sample(vec3)> field;
+    std::vector<vec4> texels = {};  // an environment map's, if any
 
     vec4 P(int slot) const { return params[static_cast<size_t>(slot)]; }
     Sample map(vec3 p) const { return field(p); }
     bool secondaryRays() const { return true; }
+    bool environmentMap() const { return !texels.empty(); }
+    vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 
+#include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
 };
 
@@ -269,3 +273,48 @@ TEST(RayTreeBound, IsTheTracersBoundPerRayOfTheFullTreeUnderTheCap) {
 
 }  // namespace
 }  // namespace sdfwb::sdf::f64
+
+namespace sdfwb::sdf::f64 {
+namespace {
+
+// A perfect mirror ball at the origin seen from -x: the centre pixel's ray
+// comes straight back along -x, which the latitude-longitude map puts at
+// u = 1/4, v = 1/2. An 8 x 8 map (one level of detail for this 10-pixel
+// camera) holds a known colour in the 2 x 2 texels around that point, so
+// bilinear filtering returns it exactly, and the mirror adds all of it.
+TEST(EnvironmentSamples, AMirrorBallShowsTheEquirectTexelItReflects) {
+    const int side = 8;
+    const vec4 known(0.25, 0.5, 0.75, 1);
+    std::vector<vec4> level0;
+    for (int row = 0; row < side; ++row) {
+        for (int column = 0; column < side; ++column) {
+            bool around = (column == 1 || column == 2) && (row == 3 || row == 4);
+            level0.push_back(around ? known : vec4(column / 8.0, row / 8.0, 1, 1));
+        }
+    }
+    std::vector<vec4> texels = level0;
+    texels.resize(static_cast<size_t>(mipPyramidTexels(side)), vec4(9, 9, 9, 1));  // coarser levels: not read
+    Material mirror = noMaterial();
+    mirror.reflectivity = 1;
+    mirror.reflectionColor = vec3(1);
+    auto field = [&](vec3 p) { return shapeSample(length3(p) - 1, mirror); };
+    AnalyticDriver driver{std::vector<vec4>(static_cast<size_t>(MATERIAL_SLOT), vec4(0)), field, texels};
+    TraceSettings settings = analyticSettings(2);
+    for (int i = 0; i < TRACE_SLOTS; ++i)
+        driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
+    driver.params[static_cast<size_t>(ENVIRONMENT_SLOT)] =
+        environmentSlot(EnvironmentMap{ENVIRONMENT_EQUIRECT, side, 4, 1.0}, 0);
+    vec3 eye(-3, 0, 0);
+    vec3 forward(1, 0, 0);
+    vec3 right = normalize3(cross3(forward, vec3(0, 1, 0)));
+    Camera camera{eye, forward, right, cross3(right, forward), 0.05};
+    for (int i = 0; i < CAMERA_SLOTS; ++i) driver.params[static_cast<size_t>(CAMERA_SLOT + i)] = cameraSlot(camera, i);
+    TraceState s = driver.traceSample(5, 5, 10, 10);
+    EXPECT_NEAR(s.color.x, known.x, 1e-9);
+    EXPECT_NEAR(s.color.y, known.y, 1e-9);
+    EXPECT_NEAR(s.color.z, known.z, 1e-9);
+}
+
+}  // namespace
+}  // namespace sdfwb::sdf::f64
+

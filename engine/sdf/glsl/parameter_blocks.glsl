@@ -12,6 +12,15 @@ struct Light {
     real softness;   // k
 };
 
+// The environment map (environment.glsl): its images have side N = 2^n and
+// `levels` = n + 1 mip levels each, from texel 0 of the texel buffer on.
+struct EnvironmentMap {
+    int kind;        // ENVIRONMENT_*
+    int side;        // N
+    int levels;
+    real intensity;  // multiplies the images' radiance
+};
+
 struct TraceSettings {
     int maxSteps;
     real maxDistance;
@@ -38,7 +47,9 @@ const int CAMERA_SLOT = 5;      // TRACE_SLOT + TRACE_SLOTS
 const int CAMERA_SLOTS = 4;
 const int LIGHT_SLOT = 9;       // CAMERA_SLOT + CAMERA_SLOTS
 const int LIGHT_SLOTS = 2;      // per light; unused lights are zero
-const int MATERIAL_SLOT = 25;   // LIGHT_SLOT + MAX_LIGHTS * LIGHT_SLOTS: the default material
+const int ENVIRONMENT_SLOT = 25;  // LIGHT_SLOT + MAX_LIGHTS * LIGHT_SLOTS
+const int ENVIRONMENT_SLOTS = 1;
+const int MATERIAL_SLOT = 26;   // ENVIRONMENT_SLOT + ENVIRONMENT_SLOTS: the default material
 const int MATERIAL_SLOTS = 6;
 
 // ---- TraceSettings: (maxSteps, maxDistance, epsilon, epsilonPerDistance),
@@ -88,4 +99,10 @@ SHARED_FN vec4 lightSlot(Light l, int i) {
         return vec4(l.direction, l.softness);
     }
     return vec4(l.color, real(0));
+}
+
+// ---- EnvironmentMap: (kind, side, levels, intensity) ----
+SHARED_FN EnvironmentMap environmentFromSlots(vec4 q0) { return EnvironmentMap(int(q0.x), int(q0.y), int(q0.z), q0.w); }
+SHARED_FN vec4 environmentSlot(EnvironmentMap e, int i) {
+    return vec4(real(e.kind), real(e.side), real(e.levels), e.intensity);
 }

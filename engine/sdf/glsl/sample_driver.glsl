@@ -1,8 +1,10 @@
 // The per-sample driver loop, the same code in both backends, bound included.
-// It needs three things from its backend: P(slot), a slot of the parameter
-// buffer, map(p), the scene's field, and secondaryRays(), whether the scene
-// has mirrors or glass. GLSL: the generated functions before
-// it; C++: members of the struct this file is included in (cpu/interpreter.inl).
+// It needs four things from its backend: P(slot), a slot of the parameter
+// buffer, map(p), the scene's field, secondaryRays(), whether the scene
+// has mirrors or glass, and environmentMap(), whether rays that leave the
+// scene see an image (environment_lookup.glsl, which reads T(i)). GLSL: the
+// generated functions before it; C++: members of the struct this file is
+// included in (cpu/interpreter.inl).
 // One call site of map() (compile cost grows with call sites, see
 // docs/toolchain-notes.md).
 
@@ -33,6 +35,9 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
     Sample field = shapeSample(real(0), s.material);
     RayTree tree = rayTreeBegin();
+    // a pixel's angular width at the image centre: the footprint of rays
+    // that leave the scene (curved mirrors widen it; that is not modelled)
+    real pixelAngle = real(2) * sceneCamera().tanHalfFov / height;
     int limit = secondaryRays() ? rayTreeIterationBound(settings) : traceIterationBound(settings);
     for (int i = 0; i < limit; ++i) {
         Light light = sceneLight(lightIndex(s));
@@ -45,6 +50,9 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
         }
         s = traceAdvance(s, field, light, settings);
         if (s.phase == PHASE_DONE) {
+            if (environmentMap() && !s.hit) {
+                s.color = environmentRadiance(s.rayDirection, pixelAngle);
+            }
             if (!secondaryRays()) {
                 break;
             }

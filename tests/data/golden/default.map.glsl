@@ -4,13 +4,13 @@ Sample map(vec3 p) {
     vec3 p2;
     Sample s0;
     Sample s1;
-    p1 = instTranslate(p0, P(49));
-    s0 = shapeSample(instSphere(p1, P(50)), M(31));
-    p1 = instRotate(p0, P(51), P(52), P(53));
-    p2 = instTranslate(p1, P(54));
-    s1 = shapeSample(instBox(p2, P(55)), M(37));
+    p1 = instTranslate(p0, P(50));
+    s0 = shapeSample(instSphere(p1, P(51)), M(32));
+    p1 = instRotate(p0, P(52), P(53), P(54));
+    p2 = instTranslate(p1, P(55));
+    s1 = shapeSample(instBox(p2, P(56)), M(38));
     s0 = instUnion(s0, s1);
-    s1 = instGround(p0, P(56), P(57), P(58), M(43));
+    s1 = instGround(p0, P(57), P(58), P(59), M(44));
     s0 = instUnion(s0, s1);
     return s0;
 }

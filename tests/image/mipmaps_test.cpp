@@ -1,0 +1,124 @@
+// The notes' mipmaps (image/mipmaps.h) against their averaging formula, and
+// the environment map's images as the shared sampler reads them: square,
+// power-of-two, rows from the bottom, unreadable files named in the error.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "image/environment_images.h"
+#include "image/image_io.h"
+#include "image/mipmaps.h"
+#include "sdf/shared.h"
+
+namespace sdfwb::image {
+namespace {
+
+TEST(Mipmaps, EachLevelIsTheMeanOfFourTexelsOfTheLevelBefore) {
+    const int side = 16;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> value(0.0f, 4.0f);
+    std::vector<glm::vec4> level0;
+    for (int i = 0; i < side * side; ++i) level0.emplace_back(value(random), value(random), value(random), 1.0f);
+    std::vector<glm::vec4> texels = buildMipmaps(level0, side);
+    ASSERT_EQ(texels.size(), static_cast<size_t>(sdf::f32::mipPyramidTexels(side)));
+    for (int level = 1; (side >> level) >= 1; ++level) {
+        const int size = side >> level;
+        const size_t here = static_cast<size_t>(sdf::f32::mipLevelOffset(side, level));
+        const size_t before = static_cast<size_t>(sdf::f32::mipLevelOffset(side, level - 1));
+        auto previous = [&](int j, int k) { return texels[before + static_cast<size_t>(k * 2 * size + j)]; };
+        for (int k = 0; k < size; ++k) {
+            for (int j = 0; j < size; ++j) {
+                glm::vec4 expected = (previous(2 * j, 2 * k) + previous(2 * j + 1, 2 * k) + previous(2 * j, 2 * k + 1) +
+                                      previous(2 * j + 1, 2 * k + 1)) /
+                                     4.0f;
+                glm::vec4 got = texels[here + static_cast<size_t>(k * size + j)];
+                for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ(got[c], expected[c]) << level << " " << j << " " << k;
+            }
+        }
+    }
+    // the last level is the mean of the whole image
+    glm::vec4 mean(0.0f);
+    for (const glm::vec4& t : level0) mean += t;
+    mean /= static_cast<float>(side * side);
+    EXPECT_NEAR(texels.back().x, mean.x, 1e-5);
+}
+
+class EnvironmentImagesTest : public testing::Test {
+protected:
+    // one folder per test: CTest runs the tests of this file in parallel processes
+    std::filesystem::path folder = std::filesystem::path(testing::TempDir()) /
+                                   (std::string("sdfwb_environment_images_") +
+                                    testing::UnitTest::GetInstance()->current_test_info()->name());
+    void SetUp() override { std::filesystem::create_directories(folder); }
+    void TearDown() override { std::filesystem::remove_all(folder); }
+
+    // A width x height image, red on its top row, blue on its bottom row, black between.
+    std::filesystem::path redOverBlue(const std::string& name, int width, int height) {
+        Image image(width, height);
+        for (int x = 0; x < width; ++x) {
+            image.rgb[static_cast<size_t>(3 * x)] = 1.0f;
+            image.rgb[static_cast<size_t>(3 * ((height - 1) * width + x) + 2)] = 1.0f;
+        }
+        std::filesystem::path path = folder / name;
+        writeImage(path, image);
+        return path;
+    }
+};
+
+TEST_F(EnvironmentImagesTest, AnImageBecomesASquareWithRowsFromTheBottom) {
+    EnvironmentImages images = loadEnvironmentImages({redOverBlue("sky.png", 4, 4)}, kMaxEnvironmentSide);
+    EXPECT_EQ(images.side, 4);
+    EXPECT_EQ(images.levels, 3);
+    ASSERT_EQ(images.texels.size(), static_cast<size_t>(sdf::f32::mipPyramidTexels(4)));
+    EXPECT_EQ(images.texels[0], glm::vec4(0, 0, 1, 1));   // bottom row first: blue
+    EXPECT_EQ(images.texels[12], glm::vec4(1, 0, 0, 1));  // top row: red
+}
+
+TEST_F(EnvironmentImagesTest, OtherSizesAreResampledToThePowerOfTwoAboveWithinTheLimit) {
+    EXPECT_EQ(loadEnvironmentImages({redOverBlue("wide.png", 40, 20)}, kMaxEnvironmentSide).side, 64);
+    EXPECT_EQ(loadEnvironmentImages({redOverBlue("wide.png", 40, 20)}, 16).side, 16);
+    // six faces share one side: the largest face's
+    std::vector<std::filesystem::path> faces;
+    for (int i = 0; i < 6; ++i) faces.push_back(redOverBlue("face" + std::to_string(i) + ".png", i == 3 ? 8 : 4, 4));
+    EnvironmentImages box = loadEnvironmentImages(faces, kMaxBoxFaceSide);
+    EXPECT_EQ(box.side, 8);
+    EXPECT_EQ(box.texels.size(), static_cast<size_t>(6 * sdf::f32::mipPyramidTexels(8)));
+}
+
+TEST_F(EnvironmentImagesTest, FilesThatCannotBeReadAreNamedInOneLine) {
+    std::filesystem::path text = folder / "notes.png";
+    std::ofstream(text) << "not an image";
+    for (const std::filesystem::path& path : {folder / "missing.exr", text}) {
+        try {
+            loadEnvironmentImages({path}, kMaxEnvironmentSide);
+            ADD_FAILURE() << path;
+        } catch (const std::runtime_error& error) {
+            std::string message = error.what();
+            EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        }
+    }
+}
+
+TEST_F(EnvironmentImagesTest, AnImageOverThePixelLimitIsRefusedBeforeItsPixelsAreRead) {
+    std::filesystem::path big = redOverBlue("big.png", 64, 64);
+    try {
+        readImage(big, 1000);
+        ADD_FAILURE();
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("64 x 64 pixels"), std::string::npos) << error.what();
+    }
+}
+
+TEST(EnvironmentPlaceholder, IsAMarkedCheckerboardPerImage) {
+    auto placeholder = placeholderEnvironmentImages(6);
+    EXPECT_EQ(placeholder->texels.size(), static_cast<size_t>(6 * sdf::f32::mipPyramidTexels(placeholder->side)));
+    EXPECT_EQ(placeholder->texels[0], glm::vec4(1, 0, 1, 1));
+}
+
+}  // namespace
+}  // namespace sdfwb::image

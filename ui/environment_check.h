@@ -1,0 +1,44 @@
+#pragma once
+// The environment tab's check of its image files off the UI thread: reading
+// an image (and, for a bad one, finding which of the box map's six it is) can
+// take a noticeable moment, so the check runs on a worker whenever the files
+// the scene names change, and the tab shows the last finished answer. Its job
+// also leaves the images in the environment cache (image/environment_images.h),
+// so the viewport's next render finds them read.
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "jobs/job_queue.h"
+#include "scene/scene.h"
+
+namespace sdfwb::ui {
+
+class EnvironmentCheck {
+public:
+    // Checks the files of `scene`'s environment map unless they are the ones
+    // last asked about; returns at once.
+    void request(const scene::Scene& scene);
+    // The last finished check's problems ("environment.image: cannot read ...").
+    std::vector<std::string> problems() const;
+    // The last request's check is still running.
+    bool pending() const { return job_ && !job_->finished(); }
+    // Waits for the last request (tests; the UI polls).
+    void wait() const {
+        if (job_) job_->wait();
+    }
+
+private:
+    struct Shared {
+        mutable std::mutex mutex;
+        std::vector<std::string> problems;
+    };
+    std::vector<std::string> asked_;  // the files last asked about, with their keys
+    std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
+    jobs::JobHandle job_;
+    jobs::JobQueue queue_{1};  // last: stops before the rest goes
+};
+
+}  // namespace sdfwb::ui
