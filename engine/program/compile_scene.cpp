@@ -41,6 +41,9 @@ static_assert(static_cast<int>(scene::TexturePattern::None) == codes::TEXTURE_NO
 static_assert(static_cast<int>(scene::TexturePattern::Checker) == codes::TEXTURE_CHECKER);
 static_assert(static_cast<int>(scene::TexturePattern::Stripes) == codes::TEXTURE_STRIPES);
 static_assert(static_cast<int>(scene::TexturePattern::Noise) == codes::TEXTURE_NOISE);
+static_assert(static_cast<int>(scene::BumpPattern::None) == codes::BUMP_NONE);
+static_assert(static_cast<int>(scene::BumpPattern::Noise) == codes::BUMP_NOISE);
+static_assert(static_cast<int>(scene::BumpPattern::Waves) == codes::BUMP_WAVES);
 static_assert(static_cast<int>(scene::EnvironmentMapKind::Color) == codes::ENVIRONMENT_COLOR);
 static_assert(static_cast<int>(scene::EnvironmentMapKind::Equirect) == codes::ENVIRONMENT_EQUIRECT);
 static_assert(static_cast<int>(scene::EnvironmentMapKind::Sphere) == codes::ENVIRONMENT_SPHERE);
@@ -282,18 +285,28 @@ public:
 
 private:
     // A primitive whose material has a texture gets its sample textured at
-    // its object-space point P[p] (texture.glsl); a scene without textures
-    // compiles to the same code as before they existed. The footprint is
+    // its object-space point P[p] (texture.glsl), and one with a bump map its
+    // bump height there; a scene without either compiles to the same code as
+    // before they existed. The footprint is
     // converted to texture units: world widths shrink by the scale nodes
     // above the primitive (objectScale_), then by the texture's scale.
     void texture(const Node& node, int sample, int point) {
         auto it = materialIndex_.find(node.text("material"));
         const scene::Material& m = it == materialIndex_.end() ? defaultMaterial_ : scene_.materials[it->second];
-        if (m.texture == scene::TexturePattern::None) return;
-        double perUnit = 1.0 / m.textureScale;
-        double footprint = footprintPerDistance * perUnit / objectScale_;
-        int param = addParams({dvec4(static_cast<double>(m.texture), perUnit, footprint, 0), dvec4(m.textureColor, 0)});
-        emit({Opcode::Texture, sample, sample, point, param, -1, 0});
+        if (m.texture != scene::TexturePattern::None) {
+            double perUnit = 1.0 / m.textureScale;
+            double footprint = footprintPerDistance * perUnit / objectScale_;
+            int param =
+                addParams({dvec4(static_cast<double>(m.texture), perUnit, footprint, 0), dvec4(m.textureColor, 0)});
+            emit({Opcode::Texture, sample, sample, point, param, -1, 0});
+        }
+        if (m.bump != scene::BumpPattern::None) {
+            // the depth in object units, like the pattern: scale nodes scale the bumps too
+            double perUnit = 1.0 / m.bumpScale;
+            double footprint = footprintPerDistance * perUnit / objectScale_;
+            int param = addParams({dvec4(static_cast<double>(m.bump), perUnit, footprint, m.bumpDepth * objectScale_)});
+            emit({Opcode::Bump, sample, sample, point, param, -1, 0});
+        }
     }
 
     // x minus the nearest multiple of period (period > 0), exact in double for
@@ -319,7 +332,8 @@ private:
                                 .transparency = m.transparency,
                                 .transmissionColor = m.transmissionColor,
                                 .ior = m.ior,
-                                .fresnel = m.fresnel ? 1.0 : 0.0};
+                                .fresnel = m.fresnel ? 1.0 : 0.0,
+                                .bump = 0.0};  // a sample's, set by a Bump instruction: not packed
         int first = static_cast<int>(program_.params.size());
         for (int i = 0; i < shared::MATERIAL_SLOTS; ++i) program_.params.push_back(shared::materialSlot(packed, i));
         return first;

@@ -68,6 +68,7 @@ constexpr bool isCombineClass(OpClass c) { return c == OpClass::Combine || c == 
     X(Displace, "displace", Post, 1, instDisplace)                                   \
     X(StepScale, "step_scale", Post, 1, instStepScale)                               \
     X(Texture, "texture", Texture, 2, instTexture)                                   \
+    X(Bump, "bump", Texture, 1, instBump)                                            \
     X(Empty, "empty", Constant, 0, instEmpty)
 
 enum class Opcode {

@@ -199,7 +199,8 @@ Role roleOf(Opcode op) {
     case Opcode::RoundDistance:
     case Opcode::Displace:
     case Opcode::StepScale:
-    case Opcode::Texture: return Role::Post;
+    case Opcode::Texture:
+    case Opcode::Bump: return Role::Post;
     case Opcode::Empty: return Role::Constant;
     }
     return Role::Constant;
@@ -259,7 +260,8 @@ Range postRange(const Instruction& in, const Range& s, const glm::dvec4* q) {
         return {{s.d.lo - amplitude, s.d.hi + amplitude}, {(s.step.lo - amplitude) * f, (s.step.hi + amplitude) * f}};
     }
     case Opcode::StepScale: return {s.d, {s.step.lo * q[0].x, s.step.hi * q[0].x}};
-    case Opcode::Texture: return s;  // the material only
+    case Opcode::Texture:
+    case Opcode::Bump: return s;  // the material only
     default: return unknownRange();
     }
 }

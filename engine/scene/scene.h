@@ -56,6 +56,9 @@ struct Camera {
 enum class TexturePattern { None, Checker, Stripes, Noise };
 inline constexpr const char* kTexturePatternNames[] = {"none", "checker", "stripes", "noise"};
 static_assert(std::size(kTexturePatternNames) == static_cast<size_t>(TexturePattern::Noise) + 1);
+enum class BumpPattern { None, Noise, Waves };
+inline constexpr const char* kBumpPatternNames[] = {"none", "noise", "waves"};
+static_assert(std::size(kBumpPatternNames) == static_cast<size_t>(BumpPattern::Waves) + 1);
 
 struct Material {
     std::string name;
@@ -78,6 +81,11 @@ struct Material {
     TexturePattern texture = TexturePattern::None;
     double textureScale = 0.25;           // cell, slab or noise feature size, object units
     glm::dvec3 textureColor{0.1};
+    // Bump map (sdf/glsl/texture.glsl): a height field of the object-space
+    // point that perturbs the shading normal; the surface stays as it is.
+    BumpPattern bump = BumpPattern::None;
+    double bumpScale = 0.25;              // noise feature size or wavelength, object units
+    double bumpDepth = 0.01;              // height of the field's range, object units
 
     bool operator==(const Material&) const = default;
 };

@@ -2,7 +2,8 @@
 // compile time against scene size (cold Mesa cache), GL against CPU time, the
 // cost of the ray tree (mirrors and glass) against the same scenes without it,
 // the cost of the ground's footprint filter against the point pattern, and
-// the cost of environment maps against the background colour.
+// the cost of environment maps against the background colour, and of bump
+// maps against the same materials without them.
 // Run: build/tests/bench/render_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
 
 #include <cstdlib>
@@ -144,6 +145,20 @@ BENCHMARK_CAPTURE(environmentMapCost, box_cpu, "tutorial/12_box_map.json", false
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK_CAPTURE(environmentMapCost, box_gl, "tutorial/12_box_map.json", true)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+
+// What bump maps cost: tutorial 13 with its three bumped materials (range 1)
+// and without bumps (range 0: no bump instructions), 480x270 AA 1, CPU (2
+// threads) and GL, in one run.
+void bumpMapCost(benchmark::State& state, bool gl) {
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/tutorial/13_bump_map.json");
+    if (state.range(0) == 0) {
+        for (scene::Material& m : s.materials) m.bump = scene::BumpPattern::None;
+    }
+    program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
+    renderEachIteration(state, p, gl);
+}
+BENCHMARK_CAPTURE(bumpMapCost, cpu, false)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(bumpMapCost, gl, true)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 }  // namespace
 }  // namespace sdfwb

@@ -131,6 +131,11 @@ std::vector<ConformanceCase> conformanceCases() {
           {dvec4(shared::TEXTURE_NOISE, 2.5, 0.002, 0), dvec4(0.5, 0.25, 0, 0)},
           {dvec4(shared::TEXTURE_NOISE, 1e3, kHuge, 0), dvec4(1, 1, 1, 0)},
           {dvec4(shared::TEXTURE_NONE, 1, 0.01, 0), dvec4(0, 0, 0, 0)}}},
+        {Opcode::Bump,
+         {{dvec4(shared::BUMP_NOISE, 4, 0.01, 0.02)},
+          {dvec4(shared::BUMP_WAVES, 2.5, 0.002, 0.5)},
+          {dvec4(shared::BUMP_NOISE, 1e3, kHuge, 1)},
+          {dvec4(shared::BUMP_NONE, 1, 0.01, 1)}}},
         {Opcode::Empty, {{}}},
     };
 }
@@ -198,7 +203,8 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
                            .transparency = 1 - shininess / 64,
                            .transmissionColor = glm::dvec3(1) - color,
                            .ior = 1 + shininess / 64,
-                           .fresnel = emission > 0 ? 1.0 : 0.0};
+                           .fresnel = emission > 0 ? 1.0 : 0.0,
+                           .bump = 0.0};
         int slot = static_cast<int>(p.params.size());
         for (int i = 0; i < shared::MATERIAL_SLOTS; ++i) p.params.push_back(shared::materialSlot(m, i));
         return slot;
@@ -254,8 +260,8 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
     return out;
 }
 
-// What one evaluation reads back per point: view 0 is (d, step, 0, 0), views 1
-// to MATERIAL_SLOTS the material's slots.
+// What one evaluation reads back per point: view 0 is (d, step, bump, 0),
+// views 1 to MATERIAL_SLOTS the material's slots.
 constexpr std::string_view kMain = R"(
 uniform samplerBuffer uPoints;
 uniform int uView;
@@ -264,7 +270,7 @@ invariant evalResult;
 void main() {
     vec4 p = texelFetch(uPoints, evalIndex());
     Sample s = map(vec3(p.x, p.y, p.z));
-    evalResult = uView == 0 ? vec4(s.d, s.step, 0.0, 0.0) : materialSlot(s.material, uView - 1);
+    evalResult = uView == 0 ? vec4(s.d, s.step, s.material.bump, 0.0) : materialSlot(s.material, uView - 1);
 }
 )";
 
@@ -358,7 +364,7 @@ private:
             const float* q = &points[static_cast<size_t>(i) * 4];
             cpu::f32::Sample s = cpu::f32::mapProgram(p, cpuParams.data(), scratch, cpu::f32::vec3(q[0], q[1], q[2]));
             cpu::f32::vec4 expected =
-                view == 0 ? cpu::f32::vec4(s.d, s.step, 0.0f, 0.0f) : cpu::f32::materialSlot(s.material, view - 1);
+                view == 0 ? cpu::f32::vec4(s.d, s.step, s.material.bump, 0.0f) : cpu::f32::materialSlot(s.material, view - 1);
             for (int k = 0; k < 4; ++k) {
                 float g = got[static_cast<size_t>(i) * 4 + static_cast<size_t>(k)];
                 std::int64_t ulps = tolerance == 0 ? ulpsApart(expected[k], g) : unitUlpsApart(expected[k], g);

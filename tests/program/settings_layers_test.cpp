@@ -152,6 +152,7 @@ scene::Scene sceneUsingAMaterial() {
     scene::Material m;
     m.name = "m";
     m.texture = scene::TexturePattern::Checker;  // else the texture's scale and colour are inert
+    m.bump = scene::BumpPattern::Noise;          // likewise the bump's scale and depth
     s.materials.push_back(m);
     s.root = scene::Node::make(scene::NodeKind::Sphere);
     s.root.set("material", std::string("m"));

@@ -318,3 +318,67 @@ TEST(EnvironmentSamples, AMirrorBallShowsTheEquirectTexelItReflects) {
 }  // namespace
 }  // namespace sdfwb::sdf::f64
 
+namespace sdfwb::sdf::f64 {
+namespace {
+
+// A white floor y = 0 lit by one light, seen from straight above, whose
+// material's bump height is height(p): the colour is N'.L of the bumped normal.
+vec3 bumpedFloor(std::function<double(vec3)> height, vec3 towardsLight) {
+    auto field = [&](vec3 p) {
+        Material m = noMaterial();
+        m.diffuse = vec3(1);
+        m.bump = height(p);
+        return shapeSample(p.y, m);
+    };
+    AnalyticDriver driver{std::vector<vec4>(static_cast<size_t>(MATERIAL_SLOT), vec4(0)), field};
+    TraceSettings settings = analyticSettings(0);
+    settings.lightCount = 1;
+    for (int i = 0; i < TRACE_SLOTS; ++i)
+        driver.params[static_cast<size_t>(TRACE_SLOT + i)] = traceSettingsSlot(settings, i);
+    Light light{normalize3(towardsLight), vec3(1), 8};
+    for (int i = 0; i < LIGHT_SLOTS; ++i) driver.params[static_cast<size_t>(LIGHT_SLOT + i)] = lightSlot(light, i);
+    Camera camera{vec3(0, 2, 0), vec3(0, -1, 0), vec3(1, 0, 0), vec3(0, 0, -1), 0.5};
+    for (int i = 0; i < CAMERA_SLOTS; ++i) driver.params[static_cast<size_t>(CAMERA_SLOT + i)] = cameraSlot(camera, i);
+    TraceState s = driver.traceSample(5, 5, 10, 10);
+    EXPECT_TRUE(s.hit);
+    return s.color;
+}
+
+TEST(BumpSamples, AConstantHeightFieldLeavesTheNormalUnchanged) {
+    vec3 towards(1, 2, 0.5);
+    vec3 flat = bumpedFloor([](vec3) { return 0.0; }, towards);
+    EXPECT_NEAR(flat.x, normalize3(towards).y, 1e-9);
+    for (double c : {0.02, -3.0, 17.5}) {
+        EXPECT_EQ(bumpedFloor([c](vec3) { return c; }, towards), flat) << c;
+    }
+}
+
+// h = k x: the notes' n' = normalize((t_u + d_u n) x (t_v + d_v n)) with
+// t_u = x, t_v = -z, d_u = k, d_v = 0 is normalize(-k, 1, 0).
+TEST(BumpSamples, ALinearHeightFieldTiltsTheNormalAsTheNotesGiveIt) {
+    vec3 towards = normalize3(vec3(1, 1, 0.3));
+    for (double k : {0.1, 0.5, -0.8}) {
+        vec3 tilted = normalize3(vec3(-k, 1, 0));
+        vec3 c = bumpedFloor([k](vec3 p) { return k * p.x; }, towards);
+        EXPECT_NEAR(c.x, dot3(tilted, towards), 1e-6) << k;
+    }
+}
+
+TEST(BumpHeights, StayInRangeAndFadeToTheirMeanWithTheFootprint) {
+    for (int pattern : {BUMP_NOISE, BUMP_WAVES}) {
+        double spread = 0;
+        for (int i = 0; i < 200; ++i) {
+            vec3 x(0.37 * i, 0.11 * i, -0.23 * i);
+            double fine = bumpHeight(pattern, x, 0.0);
+            EXPECT_GE(fine, 0.0);
+            EXPECT_LE(fine, 1.0);
+            spread = std::max(spread, std::abs(fine - 0.5));
+            EXPECT_NEAR(bumpHeight(pattern, x, 2.0), 0.5, 1e-12) << pattern;  // a footprint of two features
+        }
+        EXPECT_GT(spread, 0.3) << pattern;
+    }
+    EXPECT_EQ(bumpHeight(BUMP_NONE, vec3(1, 2, 3), 0.0), 0.0);
+}
+
+}  // namespace
+}  // namespace sdfwb::sdf::f64

@@ -128,6 +128,16 @@ SHARED_FN Sample instTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1) {
     return Sample(s.d, s.step, texturedMaterial(s.material, int(q0.x), p * q0.y, w, xyz(q1)));
 }
 
+// ---- Bump: S[dst] = f(S[a], P[b], P[0], slots) ----
+// A primitive's sample carrying its bump map's height at its object-space
+// point p (texture.glsl), which the tracer differentiates for the shading
+// normal. q0 = (pattern, 1 / scale, footprint per distance in bump units, depth).
+SHARED_FN Sample instBump(Sample s, vec3 p, vec3 eye, vec4 q0) {
+    Material m = s.material;
+    m.bump = q0.w * bumpHeight(int(q0.x), p * q0.y, q0.z * length3(eye));
+    return Sample(s.d, s.step, m);
+}
+
 // ---- Constant ----
 // "Nothing here": far beyond any max distance.
 SHARED_FN Sample instEmpty(Material base) { return shapeSample(real(1e10), base); }

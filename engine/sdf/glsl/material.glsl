@@ -13,12 +13,14 @@ struct Material {
     vec3 transmissionColor; // M_T
     real ior;               // index of refraction against the outside's 1
     real fresnel;           // 0: the notes' fixed fractions, 1: Schlick's; a smooth blend mixes them
+    real bump;              // the bump map's height at this point, scene units (texture.glsl); 0 without one
 };
 
 // ---- Material: (ambient, shininess), (diffuse, ior), (specular, fresnel), (emission, emissionStrength),
 // (reflectionColor, reflectivity), (transmissionColor, transparency) ----
 SHARED_FN Material materialFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4, vec4 q5) {
-    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3), q3.w, q4.w, xyz(q4), q5.w, xyz(q5), q1.w, q2.w);
+    return Material(xyz(q0), xyz(q1), xyz(q2), q0.w, xyz(q3), q3.w, q4.w, xyz(q4), q5.w, xyz(q5), q1.w, q2.w,
+                    real(0));
 }
 SHARED_FN vec4 materialSlot(Material m, int i) {
     if (i == 0) {
@@ -42,7 +44,7 @@ SHARED_FN vec4 materialSlot(Material m, int i) {
 // No material: what the tracer holds before a hit.
 SHARED_FN Material noMaterial() {
     return Material(vec3(real(0)), vec3(real(0)), vec3(real(0)), real(1), vec3(real(0)), real(1), real(0),
-                    vec3(real(1)), real(0), vec3(real(1)), real(1), real(0));
+                    vec3(real(1)), real(0), vec3(real(1)), real(1), real(0), real(0));
 }
 
 SHARED_FN Material mixMaterial(Material a, Material b, real w) {
@@ -58,7 +60,7 @@ SHARED_FN Material mixMaterial(Material a, Material b, real w) {
                     lerpr(a.reflectivity, b.reflectivity, w), lerp3s(a.reflectionColor, b.reflectionColor, w),
                     lerpr(a.transparency, b.transparency, w),
                     lerp3s(a.transmissionColor, b.transmissionColor, w), lerpr(a.ior, b.ior, w),
-                    lerpr(a.fresnel, b.fresnel, w));
+                    lerpr(a.fresnel, b.fresnel, w), lerpr(a.bump, b.bump, w));
 }
 
 // A point of the scene's field. `d` is the distance estimate the tracer tests

@@ -181,7 +181,7 @@ SHARED_FN RayTree rayTreeFinishRay(RayTree tree, TraceState s, TraceSettings set
     if (!s.hit || s.depth >= settings.maxDepth || (m.reflectivity <= real(0) && m.transparency <= real(0))) {
         return tree;
     }
-    vec3 n = s.normal;  // faces the ray: inside a solid the field is negated
+    vec3 n = s.shadingNormal;  // faces the ray: inside a solid the field is negated
     real ratio = s.inside ? m.ior : real(1) / m.ior;
     real cosIncidence = max(-dot3(s.rayDirection, n), real(0));
     Refraction refraction = refractDirection(s.rayDirection, n, ratio);
@@ -193,12 +193,13 @@ SHARED_FN RayTree rayTreeFinishRay(RayTree tree, TraceState s, TraceSettings set
     real path = s.pathLength + s.t;
     int depth = s.depth + 1;
     if (!refraction.total) {
-        RayNode through = RayNode(s.hitPoint - n * offset, refraction.direction, refractedWeight, depth, !s.inside,
-                                  path);
+        // off the surface along its own normal: a bumped one could point back into it
+        RayNode through = RayNode(s.hitPoint - s.normal * offset, refraction.direction, refractedWeight, depth,
+                                  !s.inside, path);
         tree = rayTreePush(tree, through, settings);
     }
-    RayNode mirrored = RayNode(s.hitPoint + n * offset, reflectDirection(s.rayDirection, n), reflectedWeight, depth,
-                               s.inside, path);
+    RayNode mirrored = RayNode(s.hitPoint + s.normal * offset, reflectDirection(s.rayDirection, n), reflectedWeight,
+                               depth, s.inside, path);
     return rayTreePush(tree, mirrored, settings);
 }
 
@@ -213,8 +214,13 @@ SHARED_FN TraceState rayTreeResult(RayTree tree, TraceState s) {
 }
 
 // Inside a solid the ray marches on the negated field: the solid's surface
-// is then a surface seen from outside, with its normal facing the ray.
-SHARED_FN Sample insideSample(Sample field) { return Sample(-field.d, -field.step, field.material); }
+// is then a surface seen from outside, with its normal facing the ray, and
+// its bumps are dents (a height along the outer normal, negated).
+SHARED_FN Sample insideSample(Sample field) {
+    Material m = field.material;
+    m.bump = -m.bump;
+    return Sample(-field.d, -field.step, m);
+}
 
 // Worst case of loop iterations for a sample's whole tree: every ray of a
 // full binary tree of maxDepth levels at the tracer's bound, at most the cap.

@@ -72,3 +72,26 @@ SHARED_FN Material texturedMaterial(Material base, int pattern, vec3 x, real w, 
     m.diffuse = lerp3s(base.diffuse, textureColor, coverage);
     return m;
 }
+
+// Bump maps (lecture notes on realism, 1.2): a height field f_h of the
+// primitive's object-space point, in [0, 1], times the material's depth (in
+// scene units) in Material.bump. The tracer perturbs the shading normal by
+// its gradient, estimated from the four samples it takes for the normal
+// (tracer.glsl), so a bump map needs no (u, v) parametrization and works on
+// booleans, formulas and deformed shapes alike; the surface and its shadows
+// do not change. Filtered like the textures: detail finer than the footprint
+// fades to the mean height, whose gradient is zero, instead of sparkling.
+const int BUMP_NONE = 0;
+const int BUMP_NOISE = 1;  // value noise of feature size `scale`, two octaves
+const int BUMP_WAVES = 2;  // parallel waves of wavelength `scale` along object x
+
+SHARED_FN real bumpHeight(int pattern, vec3 x, real w) {
+    if (pattern == BUMP_NOISE) {
+        return textureCoverage(TEXTURE_NOISE, x, w);
+    }
+    if (pattern == BUMP_WAVES) {
+        real wave = real(0.5) + real(0.5) * librarySin(real(6.28318531) * x.x);
+        return lerpr(wave, real(0.5), smoothstepr(real(0.25), real(1), w));
+    }
+    return real(0);
+}

@@ -38,7 +38,9 @@ struct TraceState {
     real hitEpsilon;
     Material material;
     vec3 normalSum;
-    vec3 normal;
+    vec3 bumpSum;       // the normal's samples of the bump height, weighted alike
+    vec3 normal;        // the surface's: offsets, shadows and AO start from it
+    vec3 shadingNormal; // the normal with the bump map's perturbation: lighting and secondary rays
     real occlusion;     // (in the normal phase: the hit's own distance)
     real occlusionWeight;
     real ao;
@@ -60,8 +62,8 @@ SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLen
     Material none = noMaterial();
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
-                      real(0), real(0), real(1), 0, real(0), real(1), real(0), real(0), vec3(real(1)),
-                      vec3(real(0)), depth, inside, pathLength, real(0));
+                      vec3(real(0)), vec3(real(0)), real(0), real(0), real(1), 0, real(0), real(1), real(0),
+                      real(0), vec3(real(1)), vec3(real(0)), depth, inside, pathLength, real(0));
 }
 
 SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, real(0)); }
@@ -180,7 +182,7 @@ SHARED_FN TraceState beginShading(TraceState s, TraceSettings settings) {
 
 // `shadow` per channel: a transparent occluder tints the light it lets through.
 SHARED_FN TraceState finishLight(TraceState s, Light light, TraceSettings settings, vec3 shadow) {
-    vec3 radiance = reflectedRadiance(s.material, s.normal, -s.rayDirection, light,
+    vec3 radiance = reflectedRadiance(s.material, s.shadingNormal, -s.rayDirection, light,
                                       settings.lightingModel);
     s.color = s.color + radiance * (shadow * s.ao);
     s.light = s.light + 1;
@@ -244,6 +246,7 @@ SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
     s.phase = PHASE_NORMAL;
     s.counter = 0;
     s.normalSum = vec3(real(0));
+    s.bumpSum = vec3(real(0));
     s.lastDistance = field.d;  // the least distance at and around the hit: advanceNormal reads it
     s.occlusion = field.d;
     return s;
@@ -358,6 +361,20 @@ SHARED_FN TraceState advanceEnter(TraceState s, Sample field, TraceSettings sett
     return endMarchIfSpent(s, settings);
 }
 
+// The notes' bump mapping (1.2): with tangents t_u, t_v and the height's
+// derivatives d_u, d_v along them, n' = normalize((t_u + d_u n) x (t_v + d_v n))
+// = normalize(n - d_u t_u - d_v t_v), n minus the height's gradient g in the
+// tangent plane. The four tetrahedron samples sum to about 4 epsilon g, as
+// they do for the field's gradient. Without a bump map (g = 0) the normal is
+// kept bit for bit.
+SHARED_FN vec3 bumpedNormal(vec3 n, vec3 bumpSum, real epsilon) {
+    if (!(dot3(bumpSum, bumpSum) > real(0))) {
+        return n;
+    }
+    vec3 g = bumpSum / (real(4) * epsilon);
+    return normalize3(n - (g - n * dot3(g, n)));
+}
+
 // A hit none of whose samples is inside is on a feature thinner than
 // epsilon: it counts only where the ray gets into it (PHASE_ENTER). A ray
 // out of steps keeps its hit.
@@ -372,6 +389,7 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
         return endMarchIfSpent(s, settings);
     }
     s.normal = normalize3(s.normalSum);
+    s.shadingNormal = bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
     return beginOcclusion(s, settings);
 }
 
@@ -383,6 +401,7 @@ SHARED_FN TraceState advanceNormal(TraceState s, Sample field, TraceSettings set
         return finishNormal(s, settings);
     }
     s.normalSum = s.normalSum + tetrahedronVertex(s.counter) * field.d;
+    s.bumpSum = s.bumpSum + tetrahedronVertex(s.counter) * field.material.bump;
     s.lastDistance = min(s.lastDistance, field.d);
     s.counter = s.counter + 1;
     if (s.counter < 4) {
