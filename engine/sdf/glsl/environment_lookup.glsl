@@ -50,6 +50,10 @@ SHARED_FN vec3 environmentRadiance(vec3 d, real angle) {
     real texels = angle * environmentTexelsPerRadian(e.kind, e.side);
     real lod = texels > real(1) ? libraryLog2(texels) : real(0);
     int start = m.face * mipPyramidTexels(e.side);
-    vec3 c = sampleMipmap(start, e.side, e.levels, m.u, m.v, lod, e.kind == ENVIRONMENT_EQUIRECT);
+    // clamp: a face's edge may round a hair outside [0, 1], and a NaN (which
+    // GLSL's int() leaves undefined) becomes 0 by the library's clamp
+    real u = clamp(m.u, real(0), real(1));
+    real v = clamp(m.v, real(0), real(1));
+    vec3 c = sampleMipmap(start, e.side, e.levels, u, v, lod, e.kind == ENVIRONMENT_EQUIRECT);
     return c * e.intensity;
 }
