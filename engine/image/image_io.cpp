@@ -109,18 +109,18 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
     }
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.nchannels <= 0 || spec.nchannels > 64) {
-        throw std::runtime_error("cannot read image " + path.string() + ": it has " + std::to_string(spec.nchannels) +
-                                 " channels (at most 64 are read)");
-    }
-    if (spec.width <= 0 || spec.height <= 0 ||
+    if (spec.nchannels <= 0 || spec.width <= 0 || spec.height <= 0 ||
         static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) > maxPixels) {
         throw std::runtime_error("cannot read image " + path.string() + ": it is " + std::to_string(spec.width) +
-                                 " x " + std::to_string(spec.height) + " pixels, more than the " +
-                                 std::to_string(maxPixels) + " allowed here");
+                                 " x " + std::to_string(spec.height) + " pixels of " +
+                                 std::to_string(spec.nchannels) + " channels; at most " +
+                                 std::to_string(maxPixels) + " pixels are read here");
     }
     Image image(spec.width, spec.height);
-    int channels = spec.nchannels;
+    // colour is the first three channels, or the first one (grey, with or
+    // without alpha) for all three; the rest (alpha, extra layers) is not
+    // read, so a file of many channels costs no more memory than RGB
+    const int channels = spec.nchannels >= 3 ? 3 : 1;
     bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
     std::vector<float> pixels(image.pixelCount() * static_cast<size_t>(channels));
     std::vector<std::uint8_t> bytes;

@@ -28,8 +28,9 @@ void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, con
                 const Metadata& metadata = {});
 
 // Reads any image OpenImageIO can read as linear RGB (8-bit data is decoded
-// from sRGB). Throws std::runtime_error naming the path, also for an image of
-// more than `maxPixels` pixels (checked before its pixels are read).
+// from sRGB; a one- or two-channel image is grey). Throws std::runtime_error
+// naming the path, also for an image of more than `maxPixels` pixels (checked
+// before its pixels are read).
 Image readImage(const std::filesystem::path& path, std::size_t maxPixels = std::size_t(1) << 28);
 
 // Whether the file stores the display encoding (8-bit) rather than linear floats.
