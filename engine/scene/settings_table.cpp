@@ -49,7 +49,7 @@ const Setting<Environment> kEnvironment[] = {
     {"box_ny", "box -y face", "", Text, &Environment::boxNegativeY},
     {"box_pz", "box +z face", "", Text, &Environment::boxPositiveZ},
     {"box_nz", "box -z face", "", Text, &Environment::boxNegativeZ},
-    {"intensity", "map intensity", "", Real, &Environment::intensity, NonNegative, 0, 0, {}, {0.01, 0.0, 1e6}},
+    {"intensity", "map intensity", "", Real, &Environment::intensity, Closed, 0, 1e6, {}, {0.01, 0.0, 1e6}},
 };
 
 const Setting<Ground> kGround[] = {
