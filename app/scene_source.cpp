@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "program/environment.h"
+#include "program/scene_images.h"
 #include "scene/scene_json.h"
 
 namespace sdfwb::app {
@@ -16,7 +16,7 @@ scene::Scene loadSceneArgument(const std::string& argument) {
 }
 
 void requireSceneFiles(const scene::Scene& scene, const std::string& source) {
-    std::vector<std::string> problems = program::environmentProblems(scene);
+    std::vector<std::string> problems = program::sceneImageProblems(scene);
     if (problems.empty()) return;
     for (std::string& problem : problems) problem = (source.empty() ? "default" : source) + ": " + problem;
     throw scene::SceneError(problems);

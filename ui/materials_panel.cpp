@@ -37,8 +37,16 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
                     reassignMaterial(s, old, name);
                 }));
             }
+            const std::string path = "materials[" + std::to_string(i) + "]";
             for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
-                set("Edit material", settingWidget(row, m));  // the name has its own field above
+                if (row.type != scene::SettingType::Text) {
+                    set("Edit material", settingWidget(row, m));  // the name has its own field above
+                } else if (m.texture == scene::TexturePattern::Image) {
+                    std::string& name = m.*std::get<std::string scene::Material::*>(row.member);
+                    std::string key = path + "." + std::string(row.key);
+                    if (imageFileField(std::string(row.label).c_str(), key, name)) set("Edit material", {true, true});
+                    drawImageProblems(editor, ui, key);
+                }
             }
             drawRemoveMaterialButton(editor, ui, i);
         }

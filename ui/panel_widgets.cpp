@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 #include <imgui_internal.h>  // GetItemID: the merge key of a drag; the typed text of a drag field
 
 #include "image/encoding.h"
@@ -180,6 +181,24 @@ void commitEdit(Editor& editor, UiState& ui, const WidgetEdit& edit, const char*
 void reportProblems(UiState& ui, const Problems& problems) {
     for (const std::string& problem : problems) {
         ui.error(problem);
+    }
+}
+
+bool imageFileField(const char* label, const std::string& key, std::string& name) {
+    ImGui::InputTextWithHint(label, "image file, relative to the scene", &name);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("JSON key %s\nPNG, JPEG, TIFF or EXR; relative to the scene file's folder\n"
+                          "Enter or leaving the field applies it",
+                          key.c_str());
+    }
+    return ImGui::IsItemDeactivatedAfterEdit();
+}
+
+void drawImageProblems(const Editor& editor, UiState& ui, const std::string& keyPrefix) {
+    ui.imageCheck->request(editor.scene());
+    if (ui.imageCheck->pending()) ImGui::TextDisabled("reading images...");
+    for (const std::string& problem : ui.imageCheck->problems()) {
+        if (problem.starts_with(keyPrefix)) problemText(problem);
     }
 }
 

@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "program/environment.h"
+#include "program/scene_images.h"
 
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
@@ -32,18 +32,6 @@ void drawRenderSettingsPanel(Editor& editor, UiState& ui) {
     ImGui::PopItemWidth();
 }
 
-namespace {
-
-// The map's files that cannot be read, in red under their fields (the map
-// shows a magenta checkerboard meanwhile), as the last finished check found.
-void drawEnvironmentFileProblems(const Editor& editor, UiState& ui) {
-    ui.environmentCheck->request(editor.scene());
-    if (ui.environmentCheck->pending()) ImGui::TextDisabled("reading the map's images...");
-    for (const std::string& problem : ui.environmentCheck->problems()) problemText(problem);
-}
-
-}  // namespace
-
 void drawEnvironmentPanel(Editor& editor, UiState& ui) {
     scene::Environment e = editor.scene().environment;
     auto set = [&](WidgetEdit edit, const std::string& path) {
@@ -51,7 +39,7 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
             editor, ui, edit, "Edit environment", [&e](scene::Scene& s) { s.environment = e; }, path);
     };
     ImGui::PushItemWidth(-130);
-    std::vector<program::EnvironmentFile> files = program::environmentFiles(editor.scene());
+    std::vector<program::SceneImageFile> files = program::environmentFiles(editor.scene());
     for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) {
         std::string path = "environment." + std::string(row.key);
         if (row.type != scene::SettingType::Text) {
@@ -59,18 +47,12 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
             continue;
         }
         // only the files the chosen map reads, typed relative to the scene's folder
-        bool used = std::any_of(files.begin(), files.end(), [&](const auto& f) { return f.key == row.key; });
+        bool used = std::any_of(files.begin(), files.end(), [&](const auto& f) { return f.key == path; });
         if (!used) continue;
         std::string& name = e.*std::get<std::string scene::Environment::*>(row.member);
-        ImGui::InputTextWithHint(std::string(row.label).c_str(), "image file, relative to the scene", &name);
-        if (ImGui::IsItemHovered()) {
-            ImGui::SetTooltip("JSON key %s\nPNG, JPEG, TIFF or EXR; relative to the scene file's folder\n"
-                              "Enter or leaving the field applies it",
-                              std::string(row.key).c_str());
-        }
-        if (ImGui::IsItemDeactivatedAfterEdit()) set({true, true}, path);
+        if (imageFileField(std::string(row.label).c_str(), path, name)) set({true, true}, path);
     }
-    drawEnvironmentFileProblems(editor, ui);
+    drawImageProblems(editor, ui, "environment.");
     ImGui::Separator();
     ImGui::TextDisabled("Ground plane");
     for (const scene::Setting<scene::Ground>& row : scene::groundSettings()) {

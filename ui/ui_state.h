@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "scene/node_kinds.h"
-#include "ui/environment_check.h"
+#include "ui/scene_image_check.h"
 
 namespace sdfwb::ui {
 
@@ -55,7 +55,7 @@ struct UiState {
     // Problems of the last refused inspector edit, shown inline under it.
     std::vector<std::string> inspectorProblems;
     // The environment tab's image files, checked on a worker when they change.
-    std::shared_ptr<EnvironmentCheck> environmentCheck = std::make_shared<EnvironmentCheck>();
+    std::shared_ptr<SceneImageCheck> imageCheck = std::make_shared<SceneImageCheck>();
 
     // Formulas being typed in the Add menu, by node kind name.
     std::map<std::string, std::string> addFormulaDrafts;

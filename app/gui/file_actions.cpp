@@ -7,7 +7,7 @@
 
 #include "app/user_files/user_paths.h"
 #include "io/atomic_file.h"
-#include "program/environment.h"
+#include "program/scene_images.h"
 #include "scene/scene_json.h"
 
 namespace sdfwb::app::gui {

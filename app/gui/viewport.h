@@ -23,7 +23,7 @@
 #include "glcontext/gl_context.h"
 #include "image/compare.h"
 #include "jobs/job_queue.h"
-#include "program/environment.h"
+#include "program/scene_images.h"
 #include "render/render_backend.h"
 #include "scene/scene.h"
 #include "ui/program_compiler.h"

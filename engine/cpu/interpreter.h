@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "expr/tape.h"
-#include "image/environment_images.h"
-#include "program/environment.h"
+#include "image/mipmapped_images.h"
+#include "program/scene_images.h"
 #include "program/program.h"
 #include "prune/prune_grid.h"
 #include "sdf/shared.h"

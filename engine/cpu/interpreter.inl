@@ -33,12 +33,50 @@ inline auto withSlots(const vec4* q, F f) {
     return [&]<size_t... I>(std::index_sequence<I...>) { return f(q[I]...); }(std::make_index_sequence<Slots>{});
 }
 
+// The texel buffer of the scene's images (program/scene_images.h) as the
+// shared samplers read it, T(i): the environment's texels, then the
+// textures'. Out of range (a NaN coordinate's texel) reads zero, as
+// texelFetch does.
+struct Texels {
+    const program::ResolvedImages* images = nullptr;  // null: no images (picking, point queries)
+    real textureStretch = real(1);  // the footprint factor of image textures (sample_driver.glsl)
+
+    vec4 T(int i) const {
+        if (images == nullptr || i < 0) return vec4(real(0));
+        auto index = static_cast<size_t>(i);
+        if (images->environment) {
+            if (index < images->environment->texels.size()) return vec4(images->environment->texels[index]);
+            index -= images->environment->texels.size();
+        }
+        for (const auto& texture : images->textures) {
+            if (index < texture->texels.size()) return vec4(texture->texels[index]);
+            index -= texture->texels.size();
+        }
+        return vec4(real(0));
+    }
+
+#include "sdf/glsl/mipmap_lookup.glsl"
+#include "sdf/glsl/texture_lookup.glsl"
+};
+
+// The ImageTexture opcode's function as the opcode table names it, with the
+// texel buffer it reads as its first argument (GLSL reads a global).
+template <typename... Args>
+inline Sample instImageTexture(Texels texels, Args... args) {
+    return texels.instImageTexture(args...);
+}
+template <typename... Args>
+inline Sample instTriplanarTexture(Texels texels, Args... args) {
+    return texels.instTriplanarTexture(args...);
+}
+
 // The register files and constants one instruction reads.
 struct Registers {
     vec3* points;
     Sample* samples;
     const vec4* params;
     Scratch& scratch;
+    Texels texels;  // a pointer's worth: the shared functions are not const members
 };
 
 // One function per operand class (program/opcodes.h), so each opcode's wiring
@@ -90,6 +128,18 @@ inline void runTexture(F fn, const program::Instruction& in, const vec4* q, Regi
         withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.points[in.b], r.points[0], s...); });
 }
 template <int Slots, typename F>
+inline void runImageTexture(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    r.samples[in.dst] = withSlots<Slots>(
+        q, [&](auto... s) { return fn(r.texels, r.samples[in.a], r.points[in.b], r.points[0], s...); });
+}
+template <int Slots, typename F>
+inline void runFormulaImageTexture(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+    std::span<const real> v = r.scratch.formula(in.variant, r.points[in.b]);
+    vec4 value(v[0], v[1], v[2], v[3]);
+    r.samples[in.dst] = withSlots<Slots>(
+        q, [&](auto... s) { return fn(r.texels, r.samples[in.a], r.points[in.b], r.points[0], value, s...); });
+}
+template <int Slots, typename F>
 inline void runConstant(F fn, const program::Instruction& in, const vec4*, Registers& r) {
     r.samples[in.dst] = fn(materialAtSlot(r.params, MATERIAL_SLOT));
 }
@@ -98,8 +148,8 @@ inline void runConstant(F fn, const program::Instruction& in, const vec4*, Regis
 // `point` and returns sample register `result`. The switch is expanded from
 // the opcode table, one case per opcode.
 inline Sample runCode(std::span<const program::Instruction> code, int result, const vec4* params, Scratch& scratch,
-                      vec3 point) {
-    Registers r{scratch.points.data(), scratch.samples.data(), params, scratch};
+                      vec3 point, const Texels& texels = Texels{}) {
+    Registers r{scratch.points.data(), scratch.samples.data(), params, scratch, texels};
     r.points[0] = point;
     for (const program::Instruction& in : code) {
         const vec4* q = in.param >= 0 ? params + in.param : nullptr;
@@ -123,13 +173,13 @@ inline Sample mapProgram(const program::Program& program, const vec4* params, Sc
 // The field at `point`: the pruned instructions of the point's cell when the
 // program has a grid (engine/prune), else the whole program.
 inline Sample fieldAt(const program::Program& program, const prune::PruneGrid* grid, const vec4* params,
-                      Scratch& scratch, vec3 point) {
+                      Scratch& scratch, vec3 point, const Texels& texels = Texels{}) {
     if (grid == nullptr) {
-        return mapProgram(program, params, scratch, point);
+        return runCode(program.code, program.result, params, scratch, point, texels);
     }
     const prune::PruneLeaf& leaf = grid->leaves[static_cast<size_t>(prune::leafIndexAt(*grid, point))];
     std::span<const program::Instruction> code(grid->code.data() + leaf.offset, static_cast<size_t>(leaf.count));
-    return runCode(code, leaf.result, params, scratch, point);
+    return runCode(code, leaf.result, params, scratch, point, texels);
 }
 
 struct SampleResult {
@@ -142,22 +192,18 @@ struct SampleResult {
 
 // The shared driver loop (sdf/glsl/sample_driver.glsl) with this backend's
 // P(slot) and map(p), as the generated shader has them.
-struct SampleDriver {
+struct SampleDriver : Texels {
     const program::Program& program;
     const prune::PruneGrid* grid;
     const vec4* params;
-    const image::EnvironmentImages* environment;  // null: the background colour
     Scratch& scratch;
 
     vec4 P(int slot) const { return params[slot]; }
-    Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p); }
+    Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p, *this); }
     bool secondaryRays() const { return program.secondaryRays; }
-    bool environmentMap() const { return environment != nullptr; }
-    // Out of range (a NaN direction's texel) reads zero, as texelFetch does.
-    vec4 T(int i) const {
-        bool inside = environment && i >= 0 && static_cast<size_t>(i) < environment->texels.size();
-        return inside ? vec4(environment->texels[static_cast<size_t>(i)]) : vec4(real(0));
-    }
+    bool environmentMap() const { return images != nullptr && images->environment != nullptr; }
+    bool imageTextures() const { return !program.textureFiles.empty(); }
+    void setTextureStretch(real k) { textureStretch = k; }
 
 #include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
@@ -168,7 +214,8 @@ struct SampleDriver {
 // large scene and pays back only over many rays, so single rays and point
 // queries (picking, placement, the readout, on the UI thread) take the whole.
 // Those also see the background colour instead of an environment map's
-// images, which would have to be read from disk first.
+// images and black for image textures: the images would have to be read
+// from disk first.
 enum class FieldSource { Pruned, Whole };
 
 // The scene's constants converted to this precision once per render.
@@ -180,7 +227,7 @@ struct Kernel {
     const program::Program& program;
     std::shared_ptr<const prune::PruneGrid> grid;
     std::vector<vec4> params;  // the program's, then the grid's
-    std::shared_ptr<const image::EnvironmentImages> environment;
+    program::ResolvedImages images;
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p), grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr) {
@@ -188,9 +235,8 @@ struct Kernel {
             params.push_back(vec4(v));
         }
         if (source == FieldSource::Pruned) {
-            program::ResolvedEnvironment resolved = program::resolveEnvironment(p);
-            environment = resolved.images;
-            params[ENVIRONMENT_SLOT] = vec4(resolved.slot);
+            images = program::resolveImages(p);
+            for (const auto& [slot, value] : images.slots) params[static_cast<size_t>(slot)] = vec4(value);
         }
         if (grid) {
             for (const glm::dvec4& v : grid->extraParams) {
@@ -207,7 +253,7 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        TraceState s = SampleDriver{program, grid.get(), params.data(), environment.get(), scratch}.traceSample(
+        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch}.traceSample(
             px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }

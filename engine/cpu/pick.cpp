@@ -71,7 +71,8 @@ int decidingShape(const program::Program& program, const f32::Kernel& kernel, f3
             source[dst] = in.op == Opcode::Ground ? kGround : nextShape++;
         } else if (combine) {
             source[dst] = resultFromFirst(in.op, a, b) ? source[static_cast<size_t>(in.a)] : source[static_cast<size_t>(in.b)];
-        } else if (opClass == program::OpClass::Post || opClass == program::OpClass::Texture) {
+        } else if (opClass == program::OpClass::Post || opClass == program::OpClass::Texture ||
+                   opClass == program::OpClass::ImageTexture || opClass == program::OpClass::FormulaImageTexture) {
             source[dst] = source[static_cast<size_t>(in.a)];
         } else if (opClass == program::OpClass::Constant) {
             source[dst] = kNothing;

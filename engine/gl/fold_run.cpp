@@ -76,7 +76,9 @@ bool skippable(const program::Program& program, const FoldRun& run) {
         if (pointA && in.a >= 0 && pointTemp[static_cast<size_t>(in.a)]) return false;
         if (!pointA && c != OpClass::Constant && in.a >= 0 && sampleTemp[static_cast<size_t>(in.a)]) return false;
         if (program::isCombineClass(c) && sampleTemp[static_cast<size_t>(in.b)]) return false;
-        if (c == OpClass::Post && pointTemp[static_cast<size_t>(in.b)]) return false;
+        bool pointB = c == OpClass::Post || c == OpClass::Texture || c == OpClass::ImageTexture ||
+                      c == OpClass::FormulaImageTexture;
+        if (pointB && pointTemp[static_cast<size_t>(in.b)]) return false;
         (c == OpClass::Point ? pointTemp : sampleTemp)[static_cast<size_t>(in.dst)] = false;
     }
     // Skipping blocks leaves the accumulator at least its whole value (a union

@@ -10,7 +10,7 @@
 #include "gl/shader_generator.h"
 #include "glcontext/gl_debug.h"
 #include "glcontext/shader_program.h"
-#include "program/environment.h"
+#include "program/scene_images.h"
 #include "sdf/shared.h"
 
 namespace sdfwb::gl {
@@ -31,7 +31,7 @@ namespace {
 
 const char* const kUniformNames[] = {"uParams",     "uResolution", "uSubsample", "uAA",
                                      "uPruneNodes", "uFoldSpans",  "uFoldBlocks", "uTexels"};
-// Texture units: the parameters 0, the fold loop's lists 1 to 3, the environment's texels 4.
+// Texture units: the parameters 0, the fold loop's lists 1 to 3, the scene images' texels 4.
 constexpr int kTexelUnit = 4;
 const char* const kFoldSamplers[] = {"uPruneNodes", "uFoldSpans", "uFoldBlocks"};
 
@@ -143,12 +143,12 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
             gl_.TexBuffer(GL_TEXTURE_BUFFER, formats[t], foldBuffers_[t].get());
         }
     }
-    program::ResolvedEnvironment environment = program::resolveEnvironment(program);
-    if (environment.images) {
-        for (int i = 0; i < 4; ++i) {
-            params[static_cast<size_t>(sdf::f32::ENVIRONMENT_SLOT * 4 + i)] = static_cast<float>(environment.slot[i]);
+    program::ResolvedImages images = program::resolveImages(program);
+    if (images.any()) {
+        for (const auto& [slot, value] : images.slots) {
+            for (int i = 0; i < 4; ++i) params[static_cast<size_t>(slot * 4 + i)] = static_cast<float>(value[i]);
         }
-        uploadEnvironment(environment.images);
+        uploadImages(images);
     }
     if (params.empty()) params.assign(4, 0.0f);  // a buffer texture may not be empty
     gl_.BindBuffer(GL_TEXTURE_BUFFER, paramBuffer_.get());
@@ -165,24 +165,34 @@ void GlRenderer::uploadParameters(const program::Program& program, const CachedP
     for (int t = 0; t < 3; ++t) {
         if (run) gl_.Uniform1i(cached.uniform(kFoldSamplers[t]), 1 + t);
     }
-    if (environment.images) gl_.Uniform1i(cached.uniform("uTexels"), kTexelUnit);
+    if (images.any()) gl_.Uniform1i(cached.uniform("uTexels"), kTexelUnit);
     gl_.Uniform2f(cached.uniform("uResolution"), static_cast<float>(program.width), static_cast<float>(program.height));
     gl_.Uniform1i(cached.uniform("uAA"), program.aa);
 }
 
-void GlRenderer::uploadEnvironment(const std::shared_ptr<const image::EnvironmentImages>& images) {
-    if (images != uploadedEnvironment_) {
+void GlRenderer::uploadImages(const program::ResolvedImages& images) {
+    std::vector<std::shared_ptr<const image::MipmappedImages>> parts{images.environment};
+    parts.insert(parts.end(), images.textures.begin(), images.textures.end());
+    if (parts != uploadedImages_) {
+        std::size_t count = 0;
+        for (const auto& part : parts) count += part ? part->texels.size() : 0;
         GLint limit = 0;
         gl_.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
-        if (images->texels.size() > static_cast<size_t>(limit)) {
-            throw GlError("GL backend: the environment map's " + std::to_string(images->texels.size()) +
-                          " texels exceed this driver's buffer texture limit of " + std::to_string(limit));
+        if (count > static_cast<size_t>(limit)) {
+            throw GlError("GL backend: the scene's images have " + std::to_string(count) +
+                          " texels, over this driver's buffer texture limit of " + std::to_string(limit));
         }
         gl_.BindBuffer(GL_TEXTURE_BUFFER, texelBuffer_.get());
-        gl_.BufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(images->texels.size() * sizeof(glm::vec4)),
-                       images->texels.data(), GL_STATIC_DRAW);
+        gl_.BufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(count * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
+        std::size_t offset = 0;
+        for (const auto& part : parts) {
+            if (!part) continue;
+            gl_.BufferSubData(GL_TEXTURE_BUFFER, static_cast<GLintptr>(offset * sizeof(glm::vec4)),
+                              static_cast<GLsizeiptr>(part->texels.size() * sizeof(glm::vec4)), part->texels.data());
+            offset += part->texels.size();
+        }
         gl_.BindBuffer(GL_TEXTURE_BUFFER, 0);
-        uploadedEnvironment_ = images;
+        uploadedImages_ = std::move(parts);
     }
     gl_.ActiveTexture(GL_TEXTURE0 + kTexelUnit);
     gl_.BindTexture(GL_TEXTURE_BUFFER, texelTexture_.get());

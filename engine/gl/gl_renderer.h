@@ -12,12 +12,14 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "glcontext/gl_functions.h"
 #include "glcontext/gl_object.h"
-#include "image/environment_images.h"
+#include "image/mipmapped_images.h"
 #include "image/image.h"
 #include "program/program.h"
+#include "program/scene_images.h"
 #include "render/render_control.h"
 
 namespace sdfwb::gl {
@@ -86,8 +88,9 @@ private:
     bool waitForGrid_ = true;
     const CachedProgram& programFor(const program::Program& program);
     void uploadParameters(const program::Program& program, const CachedProgram& cached);
-    // Uploads the environment map's texels unless they are the ones last uploaded.
-    void uploadEnvironment(const std::shared_ptr<const image::EnvironmentImages>& images);
+    // Uploads the scene images' texels, environment first, unless they are
+    // the ones last uploaded.
+    void uploadImages(const program::ResolvedImages& images);
     const CachedProgram* bound_ = nullptr;
 
     glcontext::GlFunctions gl_;
@@ -97,7 +100,7 @@ private:
     glcontext::GlObject vertexArray_;
     glcontext::GlObject texelBuffer_;
     glcontext::GlObject texelTexture_;
-    std::shared_ptr<const image::EnvironmentImages> uploadedEnvironment_;
+    std::vector<std::shared_ptr<const image::MipmappedImages>> uploadedImages_;
     // a fold loop's prune-grid inputs (shader_generator.cpp): nodes, spans, blocks
     glcontext::GlObject foldBuffers_[3];
     glcontext::GlObject foldTextures_[3];

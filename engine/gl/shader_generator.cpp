@@ -26,13 +26,19 @@ Material M(int slot) {
 }
 )";
 
-// The environment map's texels (program/environment.h), read by
-// environment_lookup.glsl; scenes without a map read none.
+// The texel buffer of the scene's images (program/scene_images.h), read by
+// mipmap_lookup.glsl; scenes without an environment map or an image texture
+// read none.
 constexpr std::string_view kTexels = R"(
 uniform samplerBuffer uTexels;
 vec4 T(int i) { return texelFetch(uTexels, i); }
 )";
 constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
+// The footprint factor of image textures, set by the driver (sample_driver.glsl).
+constexpr std::string_view kTextureStretch = R"(
+float textureStretch = 1.0;
+void setTextureStretch(float k) { textureStretch = k; }
+)";
 
 // The per-pass uniforms and the outputs; names match gl_renderer.cpp.
 // Everything else the tracer reads is in the parameter buffer.
@@ -110,8 +116,13 @@ void emitInstruction(std::ostringstream& out, const Instruction& in, int paramSt
         out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << slots(in) << ");\n";
         break;
     case OpClass::Texture:
+    case OpClass::ImageTexture:
         out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << point(0)
             << slots(in) << ");\n";
+        break;
+    case OpClass::FormulaImageTexture:
+        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << point(0) << ", "
+            << formulaName(in.variant) << "(" << point(in.b) << ")" << slots(in) << ");\n";
         break;
     case OpClass::Constant: out << sample(in.dst) << " = " << fn << "(M(MATERIAL_SLOT));\n"; break;
     }
@@ -199,14 +210,17 @@ std::string generateMapFunction(const program::Program& program) {
 
 std::string generateFragmentShader(const program::Program& program) {
     const bool environmentMap = program.environmentKind != sdf::f32::ENVIRONMENT_COLOR;
+    const bool texels = environmentMap || !program.textureFiles.empty();
     std::ostringstream out;
     out << "#version 330 core\n"
-        << sdf::glslPrelude() << sdf::glslLibrary() << kInterface << kParameters << generateMapFunction(program)
+        << sdf::glslPrelude() << sdf::glslLibrary() << kInterface << kParameters
+        // scenes without images read no texels
+        << (texels ? kTexels : kNoTexels) << kTextureStretch << sdf::glslTextureLookup()
+        << generateMapFunction(program)
         // a constant: scenes without mirrors or glass compile no ray tree
         << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n"
-        // likewise scenes without an environment map read no texels
-        << (environmentMap ? kTexels : kNoTexels) << "bool environmentMap() { return "
-        << (environmentMap ? "true" : "false") << "; }\n"
+        << "bool environmentMap() { return " << (environmentMap ? "true" : "false") << "; }\n"
+        << "bool imageTextures() { return " << (program.textureFiles.empty() ? "false" : "true") << "; }\n"
         << sdf::glslEnvironmentLookup() << sdf::glslSampleDriver() << kMain;
     return out.str();
 }

@@ -6,10 +6,11 @@
 #include <map>
 
 #include "program/bounds.h"
-#include "program/environment.h"
+#include "program/scene_images.h"
 #include "expr/derivative.h"
 #include "expr/formula.h"
 #include "program/rotation.h"
+#include "program/texture_mapping.h"
 #include "scene/camera_frame.h"
 #include "scene/visibility.h"
 #include "sdf/shared.h"
@@ -41,6 +42,7 @@ static_assert(static_cast<int>(scene::TexturePattern::None) == codes::TEXTURE_NO
 static_assert(static_cast<int>(scene::TexturePattern::Checker) == codes::TEXTURE_CHECKER);
 static_assert(static_cast<int>(scene::TexturePattern::Stripes) == codes::TEXTURE_STRIPES);
 static_assert(static_cast<int>(scene::TexturePattern::Noise) == codes::TEXTURE_NOISE);
+static_assert(static_cast<int>(scene::TexturePattern::Image) == codes::TEXTURE_IMAGE);
 static_assert(static_cast<int>(scene::BumpPattern::None) == codes::BUMP_NONE);
 static_assert(static_cast<int>(scene::BumpPattern::Noise) == codes::BUMP_NOISE);
 static_assert(static_cast<int>(scene::BumpPattern::Waves) == codes::BUMP_WAVES);
@@ -163,7 +165,7 @@ public:
         int p = materialize(point, offset);
         int s = allocSample();
         emit({Opcode::SdfFormula, s, p, -1, -1, materialSlot(node.text("material")),
-              addFormula(node.text("formula"), false)});
+              addFormula(node.text("formula"), FormulaLanguage::Sdf, false)});
         texture(node, s, p);
         if (p != point) releasePoint();
         return s;
@@ -177,7 +179,8 @@ public:
         int param = addParams({dvec4((lo + hi) * 0.5, node.real("max_step")),
                                dvec4((hi - lo) * 0.5, node.real("sheet_thickness") * 0.5)});
         int material = materialSlot(node.text("material"));
-        emit({Opcode::ImplicitFormula, s, p, -1, param, material, addFormula(node.text("formula"), true)});
+        int formula = addFormula(node.text("formula"), FormulaLanguage::Implicit, true);
+        emit({Opcode::ImplicitFormula, s, p, -1, param, material, formula});
         texture(node, s, p);
         if (p != point) releasePoint();
         return s;
@@ -293,7 +296,9 @@ private:
     void texture(const Node& node, int sample, int point) {
         auto it = materialIndex_.find(node.text("material"));
         const scene::Material& m = it == materialIndex_.end() ? defaultMaterial_ : scene_.materials[it->second];
-        if (m.texture != scene::TexturePattern::None) {
+        if (m.texture == scene::TexturePattern::Image) {
+            imageTexture(node, m, sample, point);
+        } else if (m.texture != scene::TexturePattern::None) {
             double perUnit = 1.0 / m.textureScale;
             double footprint = footprintPerDistance * perUnit / objectScale_;
             int param =
@@ -307,6 +312,35 @@ private:
             int param = addParams({dvec4(static_cast<double>(m.bump), perUnit, footprint, m.bumpDepth * objectScale_)});
             emit({Opcode::Bump, sample, sample, point, param, -1, 0});
         }
+    }
+
+    // The image's place in the texel buffer (the last slot) is left for the
+    // backends to fill when they read the file (program/scene_images.h).
+    // A formula has no parametrization: it is mapped triplanar, by its
+    // gradient (an implicit surface's own tape has it; a distance formula
+    // gets a second tape with one).
+    void imageTexture(const Node& node, const scene::Material& m, int sample, int point) {
+        std::string file = sceneFilePath(scene_, m.textureImage).string();
+        auto known = std::find(program_.textureFiles.begin(), program_.textureFiles.end(), file);
+        if (known == program_.textureFiles.end()) known = program_.textureFiles.insert(known, file);
+        const int fileIndex = static_cast<int>(known - program_.textureFiles.begin());
+        const Instruction& shape = program_.code.back();  // the primitive just emitted
+        if (opcodeInfo(shape.op).opClass == OpClass::FormulaShape ||
+            opcodeInfo(shape.op).opClass == OpClass::FormulaSample) {
+            int gradient =
+                shape.op == Opcode::ImplicitFormula ? shape.variant
+                                                    : addFormula(node.text("formula"), FormulaLanguage::Sdf, true);
+            double tiles = 1.0 / m.textureScale;
+            int param = addParams({dvec4(tiles, footprintPerDistance * tiles / objectScale_, 0, 0), dvec4(0.0)});
+            program_.textureSlots.push_back({param + 1, fileIndex});
+            emit({Opcode::TriplanarTexture, sample, sample, point, param, -1, gradient});
+            return;
+        }
+        TextureMapping map = textureMapping(node, m.textureScale);
+        double footprint = footprintPerDistance * map.uvPerUnit / objectScale_;
+        int param = addParams({dvec4(map.mapping, footprint, 0, 0), map.s0, map.s1, dvec4(0.0)});
+        program_.textureSlots.push_back({param + 3, fileIndex});
+        emit({Opcode::ImageTexture, sample, sample, point, param, -1, 0});
     }
 
     // x minus the nearest multiple of period (period > 0), exact in double for
@@ -339,8 +373,8 @@ private:
         return first;
     }
 
-    int addFormula(const std::string& source, bool withGradient) {
-        program_.formulas.push_back(compileFormula(source, withGradient));
+    int addFormula(const std::string& source, FormulaLanguage language, bool withGradient) {
+        program_.formulas.push_back(compileFormula(source, language, withGradient));
         return static_cast<int>(program_.formulas.size()) - 1;
     }
 
@@ -529,14 +563,15 @@ void writeSceneBlocks(Program& program, const scene::RenderSettings& r) {
 
 }  // namespace
 
-FormulaCode compileFormula(const std::string& source, bool withGradient) {
-    expr::SpaceFormula formula = withGradient ? expr::compileImplicit(source) : expr::compileSdf(source);
+FormulaCode compileFormula(const std::string& source, FormulaLanguage language, bool withGradient) {
+    expr::SpaceFormula formula =
+        language == FormulaLanguage::Implicit ? expr::compileImplicit(source) : expr::compileSdf(source);
     std::vector<expr::NodeId> outputs = {formula.value};
     if (withGradient) {
         std::array<expr::NodeId, 3> gradient = expr::gradient(formula.graph, formula.value);
         outputs.insert(outputs.end(), gradient.begin(), gradient.end());
     }
-    return {source, withGradient, expr::Tape(formula.graph, outputs)};
+    return {source, language, withGradient, expr::Tape(formula.graph, outputs)};
 }
 
 Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
@@ -597,7 +632,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     t.ambientLight = scene.environment.ambient;
     t.background = scene.environment.background;
     program.environmentKind = static_cast<int>(scene.environment.map);
-    for (const EnvironmentFile& file : environmentFiles(scene)) program.environmentFiles.push_back(file.path.string());
+    for (const SceneImageFile& file : environmentFiles(scene)) program.environmentFiles.push_back(file.path.string());
     program.environmentIntensity = scene.environment.intensity;
     for (const scene::Light& light : scene.lights) {
         program.lights.push_back({glm::normalize(light.direction), light.color, light.softness});
@@ -629,6 +664,7 @@ std::uint64_t Program::structureKey() const {
     mix(environmentKind != shared::ENVIRONMENT_COLOR);
     mix(result);
     for (const FormulaCode& formula : formulas) {
+        mix(static_cast<int>(formula.language));
         mix(formula.withGradient);
         for (char c : formula.source) mix(c);
     }

@@ -18,9 +18,9 @@ struct CompileOptions {
 // double precision, so a scene far from the world origin keeps float precision.
 Program compileScene(const scene::Scene& scene, const CompileOptions& options = {});
 
-// A user formula compiled to a tape of its value, or with `withGradient` (an
-// implicit surface) of its value and gradient; x, y, z are variables 0, 1, 2.
+// A user formula compiled to a tape of its value, or with `withGradient` of
+// its value and gradient; x, y, z are variables 0, 1, 2.
 // Throws expr::Error for a formula that does not compile.
-FormulaCode compileFormula(const std::string& source, bool withGradient);
+FormulaCode compileFormula(const std::string& source, FormulaLanguage language, bool withGradient);
 
 }  // namespace sdfwb::program

@@ -22,6 +22,8 @@ enum class OpClass {
     SmoothCombine,  // S[dst] = f(S[a], S[b], slots, variant)
     Post,           // S[dst] = f(S[a], P[b], slots)
     Texture,        // S[dst] = f(S[a], P[b], P[0], slots): P[0] is the march point, the eye at 0
+    ImageTexture,   // as Texture, and f reads the backend's texel buffer (sdf/glsl/texture_lookup.glsl)
+    FormulaImageTexture,  // S[dst] = f(S[a], P[b], P[0], formula value and gradient at P[b], slots), reads texels
     Constant,       // S[dst] = f(default material): "nothing here"
 };
 
@@ -68,6 +70,8 @@ constexpr bool isCombineClass(OpClass c) { return c == OpClass::Combine || c == 
     X(Displace, "displace", Post, 1, instDisplace)                                   \
     X(StepScale, "step_scale", Post, 1, instStepScale)                               \
     X(Texture, "texture", Texture, 2, instTexture)                                   \
+    X(ImageTexture, "image_texture", ImageTexture, 4, instImageTexture)              \
+    X(TriplanarTexture, "triplanar_texture", FormulaImageTexture, 2, instTriplanarTexture) \
     X(Bump, "bump", Texture, 1, instBump)                                            \
     X(Empty, "empty", Constant, 0, instEmpty)
 

@@ -18,10 +18,16 @@
 
 namespace sdfwb::program {
 
+// The language a formula is written in (docs/expression-language.md): a
+// signed distance (sdf nodes) or an equation F = 0 (implicit and polynomial).
+enum class FormulaLanguage { Sdf, Implicit };
+
 // A user formula compiled for evaluation (engine/expr): its tape computes the
-// value (SdfFormula) or the value and gradient (ImplicitFormula), from x, y, z.
+// value (SdfFormula) or the value and gradient (ImplicitFormula, and a
+// distance formula's triplanar texture), from x, y, z.
 struct FormulaCode {
     std::string source;
+    FormulaLanguage language = FormulaLanguage::Sdf;
     bool withGradient = false;
     expr::Tape tape;
 };
@@ -94,12 +100,22 @@ struct Program {
     bool secondaryRays = false;
     // The environment map (sdf/glsl/environment.glsl): ENVIRONMENT_* and its
     // image files, resolved against the scene's folder. The backends read the
-    // images when they render (program/environment.h), not the compiler, so a
+    // images when they render (program/scene_images.h), not the compiler, so a
     // compile stays free of file reads; they also fill ENVIRONMENT_SLOT, whose
     // image size only the files know. Structural: whether there is an image.
     int environmentKind = 0;
     std::vector<std::string> environmentFiles;
     double environmentIntensity = 1.0;
+    // Image textures (sdf/glsl/texture_lookup.glsl): each file once, resolved
+    // like the environment's, and the ImageTexture image slots that name one;
+    // the backends fill those slots with the image's place in their texel
+    // buffer when they read the files (program/scene_images.h).
+    struct TextureSlot {
+        int slot;
+        int file;  // index into textureFiles
+    };
+    std::vector<std::string> textureFiles;
+    std::vector<TextureSlot> textureSlots;
     int width = 0;
     int height = 0;
     int aa = 1;

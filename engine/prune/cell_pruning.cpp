@@ -200,6 +200,8 @@ Role roleOf(Opcode op) {
     case Opcode::Displace:
     case Opcode::StepScale:
     case Opcode::Texture:
+    case Opcode::ImageTexture:
+    case Opcode::TriplanarTexture:
     case Opcode::Bump: return Role::Post;
     case Opcode::Empty: return Role::Constant;
     }
@@ -261,6 +263,8 @@ Range postRange(const Instruction& in, const Range& s, const glm::dvec4* q) {
     }
     case Opcode::StepScale: return {s.d, {s.step.lo * q[0].x, s.step.hi * q[0].x}};
     case Opcode::Texture:
+    case Opcode::ImageTexture:
+    case Opcode::TriplanarTexture:
     case Opcode::Bump: return s;  // the material only
     default: return unknownRange();
     }

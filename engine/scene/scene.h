@@ -53,9 +53,12 @@ struct Camera {
 };
 
 // Material textures (sdf/glsl/texture.glsl's TEXTURE_* codes, static_asserted in the compiler).
-enum class TexturePattern { None, Checker, Stripes, Noise };
-inline constexpr const char* kTexturePatternNames[] = {"none", "checker", "stripes", "noise"};
-static_assert(std::size(kTexturePatternNames) == static_cast<size_t>(TexturePattern::Noise) + 1);
+enum class TexturePattern { None, Checker, Stripes, Noise, Image };
+inline constexpr const char* kTexturePatternNames[] = {"none", "checker", "stripes", "noise", "image"};
+static_assert(std::size(kTexturePatternNames) == static_cast<size_t>(TexturePattern::Image) + 1);
+// Distinct image files a scene's textures may name: with the environment's,
+// their texels stay within 2^24, where a float still counts every texel.
+inline constexpr int kMaxTextureImages = 16;
 enum class BumpPattern { None, Noise, Waves };
 inline constexpr const char* kBumpPatternNames[] = {"none", "noise", "waves"};
 static_assert(std::size(kBumpPatternNames) == static_cast<size_t>(BumpPattern::Waves) + 1);
@@ -76,11 +79,13 @@ struct Material {
     glm::dvec3 transmissionColor{1.0};    // M_T
     double ior = 1.5;                     // index of refraction (outside: 1)
     bool fresnel = false;                 // Schlick's weights instead of the notes' fixed k_ps, k_t
-    // Solid procedural colour texture (sdf/glsl/texture.glsl): mixes ambient
-    // and diffuse towards textureColor by the pattern at the object-space point.
+    // Colour texture (sdf/glsl/texture.glsl): a solid procedural pattern at
+    // the object-space point mixes ambient and diffuse towards textureColor;
+    // an image, at the primitive's (u, v), multiplies them.
     TexturePattern texture = TexturePattern::None;
-    double textureScale = 0.25;           // cell, slab or noise feature size, object units
+    double textureScale = 0.25;           // cell, slab, noise feature or image tile size, object units
     glm::dvec3 textureColor{0.1};
+    std::string textureImage;             // file, relative to the scene's folder
     // Bump map (sdf/glsl/texture.glsl): a height field of the object-space
     // point that perturbs the shading normal; the surface stays as it is.
     BumpPattern bump = BumpPattern::None;

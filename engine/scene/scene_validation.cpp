@@ -163,10 +163,18 @@ std::vector<std::string> validateScene(const Scene& scene, FormulaVerdicts* verd
         out.settings(lightSettings(), scene.lights[i], "lights[" + std::to_string(i) + "]");
     }
     std::set<std::string> names;
+    std::set<std::string> images;
     for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
         const std::string path = "materials[" + std::to_string(i) + "]";
-        out.settings(materialSettings(), scene.materials[i], path);
-        out.fail(path + ".name", materialNameProblem(scene.materials[i].name, names));
+        out.settings(materialSettings(), m, path);
+        out.fail(path + ".name", materialNameProblem(m.name, names));
+        if (m.texture != TexturePattern::Image) continue;
+        images.insert(m.textureImage);
+        if (images.size() == static_cast<size_t>(kMaxTextureImages) + 1) {
+            out.fail(path + ".texture_image",
+                     "a scene may use at most " + std::to_string(kMaxTextureImages) + " texture images");
+        }
     }
     out.tree(scene.root, verdicts);
     for (std::string& problem : materialReferenceProblems(scene)) out.problems.push_back(std::move(problem));

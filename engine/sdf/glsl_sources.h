@@ -18,8 +18,13 @@ std::string_view glslLibrary();
 // generated map() and P() it calls.
 std::string_view glslSampleDriver();
 
+// The mipmap sampler and the image textures that use it
+// (sdf/glsl/mipmap_lookup.glsl, texture_lookup.glsl), pasted after the
+// backend's texel accessor T(i) and before the generated map() that calls them.
+std::string_view glslTextureLookup();
+
 // The environment map's sampler (sdf/glsl/environment_lookup.glsl), pasted
-// after the backend's texel accessor T(i) and before the driver.
+// after the texture lookup and before the driver.
 std::string_view glslEnvironmentLookup();
 
 // The prune grid's cell lookup (sdf/glsl/prune_lookup.glsl), pasted after the

@@ -78,6 +78,7 @@ SHARED_FN real libraryAtan2(real y, real x) {
 #include "sdf/glsl/material.glsl"
 #include "sdf/glsl/texture.glsl"
 #include "sdf/glsl/environment.glsl"
+#include "sdf/glsl/texture_mapping.glsl"
 #include "sdf/glsl/camera.glsl"
 #include "sdf/glsl/instructions.glsl"
 #include "sdf/glsl/parameter_blocks.glsl"

@@ -1,4 +1,4 @@
-// Environment maps through both backends (program/environment.h and the
+// Environment maps through both backends (program/scene_images.h and the
 // shared sampler): a mirror ball in front of a box map reflects the face its
 // reflected direction points at, the sky around it shows the face ahead, and
 // the two backends agree. The faces are written by the test, one colour each.
@@ -13,7 +13,7 @@
 #include "image/image_io.h"
 #include "parity/parity.h"
 #include "program/compile_scene.h"
-#include "program/environment.h"
+#include "program/scene_images.h"
 
 namespace sdfwb {
 namespace {

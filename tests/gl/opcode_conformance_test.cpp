@@ -22,6 +22,9 @@
 
 #include "cpu/interpreter.h"
 #include "gl/shader_generator.h"
+#include "image/mipmaps.h"
+#include "image/mipmapped_images.h"
+#include "program/scene_images.h"
 #include "gl_test_support.h"
 #include "glcontext/fragment_evaluator.h"
 #include "program/compile_scene.h"
@@ -131,6 +134,23 @@ std::vector<ConformanceCase> conformanceCases() {
           {dvec4(shared::TEXTURE_NOISE, 2.5, 0.002, 0), dvec4(0.5, 0.25, 0, 0)},
           {dvec4(shared::TEXTURE_NOISE, 1e3, kHuge, 0), dvec4(1, 1, 1, 0)},
           {dvec4(shared::TEXTURE_NONE, 1, 0.01, 0), dvec4(0, 0, 0, 0)}}},
+        // q3: the test's texel pyramid (conformanceTexels), side 8, four levels
+        {Opcode::ImageTexture,
+         {{dvec4(shared::MAP_SPHERICAL, 0.01, 0, 0), dvec4(1.25, 1.25, 1.25, 0), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_SPHERICAL, 0.3, 0, 0), dvec4(0.5, 2, 1e-3, 0), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_BOX, 0.002, 0, 0), dvec4(0.5, 0.75, 1, 0), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_PLANE, 0.05, 0, 0), dvec4(0, 1, 0, 4), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_PLANE, kHuge, 0, 0), dvec4(0.6, 0, 0.8, 1e3), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_CYLINDER, 0.01, 0, 0), dvec4(0.5, 1, 0, 0), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_CONE, 0.01, 0, 0), dvec4(0.5, 0.866025, 1.5, 0), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_TORUS, 0.01, 0, 0), dvec4(1, 0.25, 0, 0), dvec4(0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_CAPSULE, 0.01, 0, 0), dvec4(0, -1, 0, 0.5), dvec4(0.3, 1, 0.2, 0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_CAPSULE, 0.01, 0, 0), dvec4(1, 1, 1, 0.5), dvec4(1, 1, 1, 0), dvec4(0, 8, 4, 0)},
+          {dvec4(shared::MAP_MEAN, 0.01, 0, 0), dvec4(0), dvec4(0), dvec4(0, 8, 4, 0)}}},
+        {Opcode::TriplanarTexture,
+         {{dvec4(4, 0.01, 0, 0), dvec4(0, 8, 4, 0)}, {dvec4(0.5, 0.3, 0, 0), dvec4(0, 8, 4, 0)},
+          {dvec4(1e3, kHuge, 0, 0), dvec4(0, 8, 4, 0)}},
+         "let q = abs(p) - vec3(0.8, 0.5, 0.6); length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - 0.15"},
         {Opcode::Bump,
          {{dvec4(shared::BUMP_NOISE, 4, 0.01, 0.02)},
           {dvec4(shared::BUMP_WAVES, 2.5, 0.002, 0.5)},
@@ -220,7 +240,10 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
     out.opParam = info.paramSlots > 0 ? addSlots(info.paramSlots) : -1;
     int formula = -1;
     if (!c.formula.empty()) {
-        p.formulas.push_back(program::compileFormula(c.formula, info.opClass == OpClass::FormulaSample));
+        const bool implicit = info.opClass == OpClass::FormulaSample;
+        const bool gradient = implicit || info.opClass == OpClass::FormulaImageTexture;
+        p.formulas.push_back(program::compileFormula(
+            c.formula, implicit ? program::FormulaLanguage::Implicit : program::FormulaLanguage::Sdf, gradient));
         formula = 0;
     }
     auto shape = [&](Opcode op, int dst, int point, dvec4 q, int material) {
@@ -228,7 +251,7 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
         p.params[static_cast<size_t>(slot)] = q;
         p.code.push_back({op, dst, point, -1, slot, material, 0});
     };
-    const int v = c.op == Opcode::SdfFormula || c.op == Opcode::ImplicitFormula ? formula : variant;
+    const int v = formula >= 0 ? formula : variant;
     switch (info.opClass) {
     case OpClass::Point:
         p.pointRegisters = 2;
@@ -250,6 +273,8 @@ ConformanceProgram conformanceProgram(const ConformanceCase& c, int variant) {
         break;
     case OpClass::Post:
     case OpClass::Texture:
+    case OpClass::ImageTexture:
+    case OpClass::FormulaImageTexture:
         p.sampleRegisters = 2;
         shape(Opcode::Sphere, 0, 0, dvec4(1.25, 0, 0, 0), first);
         p.code.push_back({c.op, 1, 0, 0, out.opParam, -1, 0});
@@ -297,6 +322,25 @@ std::int64_t unitUlpsApart(float cpu, float gl) {
     return static_cast<std::int64_t>(std::ceil(std::abs(double(cpu) - double(gl)) / ulp));
 }
 
+// The image the ImageTexture cases sample: side 8 with every texel distinct,
+// and its mipmaps, as the texel buffer's only image.
+program::ResolvedImages conformanceTexels() {
+    std::vector<glm::vec4> level0;
+    for (int i = 0; i < 64; ++i) level0.emplace_back(0.01f * float(i), 1.0f - 0.013f * float(i), 0.1f + float(i % 7) * 0.1f, 1);
+    auto images = std::make_shared<image::MipmappedImages>();
+    images->side = 8;
+    images->levels = 4;
+    images->texels = image::buildMipmaps(level0, 8);
+    program::ResolvedImages out;
+    out.environment = images;
+    return out;
+}
+
+// The texel accessor: the buffer for the cases that read it, else nothing.
+constexpr std::string_view kTexels = "uniform samplerBuffer uTexels;\nvec4 T(int i) { return texelFetch(uTexels, i); }\n";
+constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
+constexpr std::string_view kTextureStretch = "float textureStretch = 1.0;\n";
+
 class OpcodeConformance : public test::GlTest {
 protected:
     // Runs one case on every point with every parameter set and variant;
@@ -306,9 +350,13 @@ protected:
         int bad = 0;
         for (int variant : c.variants) {
             ConformanceProgram built = conformanceProgram(c, variant);
+            const OpClass opClass = program::opcodeInfo(c.op).opClass;
+            texels_ = opClass == OpClass::ImageTexture || opClass == OpClass::FormulaImageTexture;
             std::string source = std::string(sdf::glslPrelude()) + std::string(sdf::glslLibrary()) +
-                                 std::string(gl::parameterAccessSource()) + gl::generateMapFunction(built.program) +
-                                 std::string(kMain);
+                                 std::string(gl::parameterAccessSource()) +
+                                 std::string(texels_ ? kTexels : kNoTexels) + std::string(kTextureStretch) +
+                                 std::string(sdf::glslTextureLookup()) +
+                                 gl::generateMapFunction(built.program) + std::string(kMain);
             glcontext::FragmentEvaluator evaluator(gl(), source);
             const bool pointOp = program::opcodeInfo(c.op).opClass == OpClass::Point;
             for (size_t set = 0; set < c.parameterSets.size(); ++set) {
@@ -339,6 +387,9 @@ protected:
     std::string worstReport_;
 
 private:
+    bool texels_ = false;  // the case reads the texel buffer
+    program::ResolvedImages images_ = conformanceTexels();
+
     int compare(const glcontext::FragmentEvaluator& evaluator, const program::Program& p,
                 const std::vector<float>& points, int view, std::int64_t tolerance, const std::string& where) {
         std::vector<float> params;
@@ -356,13 +407,20 @@ private:
         if (!p.code.empty() && p.code.back().op != Opcode::Empty) {
             inputs.push_back({"uPoints", 4, glcontext::InputLayout::Buffer, points});
         }
+        if (texels_) {
+            const auto& t = images_.environment->texels;
+            inputs.push_back({"uTexels", 4, glcontext::InputLayout::Buffer,
+                              std::vector<float>(&t.front().x, &t.front().x + t.size() * 4)});
+        }
         std::vector<float> got = evaluator.evaluate(gl(), kWidth, kHeight, inputs);
 
         cpu::f32::Scratch scratch(p);
         int bad = 0;
         for (int i = 0; i < kPoints; ++i) {
             const float* q = &points[static_cast<size_t>(i) * 4];
-            cpu::f32::Sample s = cpu::f32::mapProgram(p, cpuParams.data(), scratch, cpu::f32::vec3(q[0], q[1], q[2]));
+            cpu::f32::Sample s = cpu::f32::runCode(p.code, p.result, cpuParams.data(), scratch,
+                                                   cpu::f32::vec3(q[0], q[1], q[2]),
+                                                   cpu::f32::Texels{texels_ ? &images_ : nullptr});
             cpu::f32::vec4 expected =
                 view == 0 ? cpu::f32::vec4(s.d, s.step, s.material.bump, 0.0f) : cpu::f32::materialSlot(s.material, view - 1);
             for (int k = 0; k < 4; ++k) {
@@ -396,7 +454,8 @@ TEST(OpcodeConformanceTable, EveryOpcodeHasACase) {
             for (const std::vector<dvec4>& set : c.parameterSets) {
                 EXPECT_EQ(static_cast<int>(set.size()), info.paramSlots) << info.name << ": a parameter set's slots";
             }
-            bool formulaOp = info.opClass == OpClass::FormulaShape || info.opClass == OpClass::FormulaSample;
+            bool formulaOp = info.opClass == OpClass::FormulaShape || info.opClass == OpClass::FormulaSample ||
+                             info.opClass == OpClass::FormulaImageTexture;
             EXPECT_EQ(formulaOp, !c.formula.empty()) << info.name << ": a formula opcode needs a formula";
         }
         EXPECT_EQ(found, 1) << "opcode " << info.name << " needs exactly one case in conformanceCases()";

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image/environment_images.h"
+#include "image/mipmapped_images.h"
 #include "image/image_io.h"
 #include "image/mipmaps.h"
 #include "sdf/shared.h"
@@ -47,7 +47,7 @@ TEST(Mipmaps, EachLevelIsTheMeanOfFourTexelsOfTheLevelBefore) {
     EXPECT_NEAR(texels.back().x, mean.x, 1e-5);
 }
 
-class EnvironmentImagesTest : public testing::Test {
+class MipmappedImagesTest : public testing::Test {
 protected:
     // one folder per test: CTest runs the tests of this file in parallel processes
     std::filesystem::path folder = std::filesystem::path(testing::TempDir()) /
@@ -69,8 +69,8 @@ protected:
     }
 };
 
-TEST_F(EnvironmentImagesTest, AnImageBecomesASquareWithRowsFromTheBottom) {
-    EnvironmentImages images = loadEnvironmentImages({redOverBlue("sky.png", 4, 4)}, kMaxEnvironmentSide);
+TEST_F(MipmappedImagesTest, AnImageBecomesASquareWithRowsFromTheBottom) {
+    MipmappedImages images = loadMipmappedImages({redOverBlue("sky.png", 4, 4)}, kMaxEnvironmentSide);
     EXPECT_EQ(images.side, 4);
     EXPECT_EQ(images.levels, 3);
     ASSERT_EQ(images.texels.size(), static_cast<size_t>(sdf::f32::mipPyramidTexels(4)));
@@ -78,23 +78,23 @@ TEST_F(EnvironmentImagesTest, AnImageBecomesASquareWithRowsFromTheBottom) {
     EXPECT_EQ(images.texels[12], glm::vec4(1, 0, 0, 1));  // top row: red
 }
 
-TEST_F(EnvironmentImagesTest, OtherSizesAreResampledToThePowerOfTwoAboveWithinTheLimit) {
-    EXPECT_EQ(loadEnvironmentImages({redOverBlue("wide.png", 40, 20)}, kMaxEnvironmentSide).side, 64);
-    EXPECT_EQ(loadEnvironmentImages({redOverBlue("wide.png", 40, 20)}, 16).side, 16);
+TEST_F(MipmappedImagesTest, OtherSizesAreResampledToThePowerOfTwoAboveWithinTheLimit) {
+    EXPECT_EQ(loadMipmappedImages({redOverBlue("wide.png", 40, 20)}, kMaxEnvironmentSide).side, 64);
+    EXPECT_EQ(loadMipmappedImages({redOverBlue("wide.png", 40, 20)}, 16).side, 16);
     // six faces share one side: the largest face's
     std::vector<std::filesystem::path> faces;
     for (int i = 0; i < 6; ++i) faces.push_back(redOverBlue("face" + std::to_string(i) + ".png", i == 3 ? 8 : 4, 4));
-    EnvironmentImages box = loadEnvironmentImages(faces, kMaxBoxFaceSide);
+    MipmappedImages box = loadMipmappedImages(faces, kMaxBoxFaceSide);
     EXPECT_EQ(box.side, 8);
     EXPECT_EQ(box.texels.size(), static_cast<size_t>(6 * sdf::f32::mipPyramidTexels(8)));
 }
 
-TEST_F(EnvironmentImagesTest, FilesThatCannotBeReadAreNamedInOneLine) {
+TEST_F(MipmappedImagesTest, FilesThatCannotBeReadAreNamedInOneLine) {
     std::filesystem::path text = folder / "notes.png";
     std::ofstream(text) << "not an image";
     for (const std::filesystem::path& path : {folder / "missing.exr", text}) {
         try {
-            loadEnvironmentImages({path}, kMaxEnvironmentSide);
+            loadMipmappedImages({path}, kMaxEnvironmentSide);
             ADD_FAILURE() << path;
         } catch (const std::runtime_error& error) {
             std::string message = error.what();
@@ -104,7 +104,7 @@ TEST_F(EnvironmentImagesTest, FilesThatCannotBeReadAreNamedInOneLine) {
     }
 }
 
-TEST_F(EnvironmentImagesTest, AnImageOverThePixelLimitIsRefusedBeforeItsPixelsAreRead) {
+TEST_F(MipmappedImagesTest, AnImageOverThePixelLimitIsRefusedBeforeItsPixelsAreRead) {
     std::filesystem::path big = redOverBlue("big.png", 64, 64);
     try {
         readImage(big, 1000);
@@ -115,7 +115,7 @@ TEST_F(EnvironmentImagesTest, AnImageOverThePixelLimitIsRefusedBeforeItsPixelsAr
 }
 
 TEST(EnvironmentPlaceholder, IsAMarkedCheckerboardPerImage) {
-    auto placeholder = placeholderEnvironmentImages(6);
+    auto placeholder = placeholderImages(6);
     EXPECT_EQ(placeholder->texels.size(), static_cast<size_t>(6 * sdf::f32::mipPyramidTexels(placeholder->side)));
     EXPECT_EQ(placeholder->texels[0], glm::vec4(1, 0, 1, 1));
 }

@@ -1,10 +1,10 @@
-// The environment map's files as the scene names them (program/environment.h):
+// The environment map's files as the scene names them (program/scene_images.h):
 // resolved against the scene's folder, only those the chosen map reads, a
 // missing name reported by its key, and names rebased when the scene moves.
 
 #include <gtest/gtest.h>
 
-#include "program/environment.h"
+#include "program/scene_images.h"
 
 namespace sdfwb::program {
 namespace {
@@ -24,9 +24,9 @@ scene::Scene boxMapIn(const std::string& folder) {
 }
 
 TEST(EnvironmentFiles, AreTheChosenMapsResolvedAgainstTheScenesFolder) {
-    std::vector<EnvironmentFile> files = environmentFiles(boxMapIn("/scenes/tutorial"));
+    std::vector<SceneImageFile> files = environmentFiles(boxMapIn("/scenes/tutorial"));
     ASSERT_EQ(files.size(), 6u);
-    EXPECT_EQ(files[0].key, "box_px");
+    EXPECT_EQ(files[0].key, "environment.box_px");
     EXPECT_EQ(files[0].path, "/scenes/tutorial/faces/px.png");
     EXPECT_EQ(files[1].path, "/scenes/shared/nx.png");
     EXPECT_EQ(files[2].path, "/absolute/py.png");
@@ -45,13 +45,13 @@ TEST(EnvironmentFiles, AFaceWithoutANameIsAProblemNamedByItsKey) {
 
 TEST(EnvironmentFiles, MovingTheSceneKeepsItsRelativeNamesPointingAtTheSameFiles) {
     scene::Scene s = boxMapIn("/scenes/tutorial");
-    std::vector<EnvironmentFile> before = environmentFiles(s);
+    std::vector<SceneImageFile> before = environmentFiles(s);
     moveSceneDirectory(s, "/elsewhere/deep");
     EXPECT_EQ(s.directory.path, "/elsewhere/deep");
     EXPECT_EQ(s.environment.boxPositiveX, "../../scenes/tutorial/faces/px.png");
     EXPECT_EQ(s.environment.boxPositiveY, "/absolute/py.png");  // absolute names stay
     EXPECT_EQ(s.environment.boxNegativeZ, "");
-    std::vector<EnvironmentFile> after = environmentFiles(s);
+    std::vector<SceneImageFile> after = environmentFiles(s);
     for (size_t i = 0; i < before.size(); ++i) {
         if (!before[i].name.empty()) EXPECT_EQ(after[i].path, before[i].path) << before[i].key;  // "" names no file
     }

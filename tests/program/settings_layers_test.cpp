@@ -140,7 +140,7 @@ void perturb(const scene::Setting<Owner>& row, Owner& owner) {
 
 bool programsDiffer(const scene::Scene& a, const scene::Scene& b) {
     program::Program p = program::compileScene(a), q = program::compileScene(b);
-    // the environment map's block is written by the backends, from these (program/environment.h)
+    // the environment map's block is written by the backends, from these (program/scene_images.h)
     bool environment = p.environmentKind != q.environmentKind || p.environmentFiles != q.environmentFiles ||
                        p.environmentIntensity != q.environmentIntensity;
     return p.params != q.params || p.width != q.width || p.height != q.height || p.aa != q.aa ||

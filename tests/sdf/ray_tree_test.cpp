@@ -80,8 +80,11 @@ struct AnalyticDriver {
     Sample map(vec3 p) const { return field(p); }
     bool secondaryRays() const { return true; }
     bool environmentMap() const { return !texels.empty(); }
+    bool imageTextures() const { return false; }
+    void setTextureStretch(real) {}
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 
+#include "sdf/glsl/mipmap_lookup.glsl"
 #include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
 };

@@ -9,7 +9,6 @@ const int ENVIRONMENT_EQUIRECT = 1;  // one latitude-longitude image
 const int ENVIRONMENT_SPHERE = 2;    // one image of a mirror ball seen along -z (the notes' sphere map)
 const int ENVIRONMENT_BOX = 3;       // six face images, +x -x +y -y +z -z (the notes' box map)
 
-const real ENVIRONMENT_PI = real(3.14159265358979);
 
 // A point of a map: which image (a box face, else 0) and where in it, u and v
 // in [0, 1] from the image's left and bottom edges.
@@ -24,8 +23,8 @@ struct MapPoint {
 // zenith (1).
 SHARED_FN MapPoint equirectPoint(vec3 d) {
     real horizontal = sqrt(d.x * d.x + d.z * d.z);
-    real u = real(0.5) + libraryAtan2(d.x, -d.z) / (real(2) * ENVIRONMENT_PI);
-    real v = real(0.5) + libraryAtan2(d.y, horizontal) / ENVIRONMENT_PI;
+    real u = real(0.5) + libraryAtan2(d.x, -d.z) / (real(2) * PI);
+    real v = real(0.5) + libraryAtan2(d.y, horizontal) / PI;
     return MapPoint(0, u, v);
 }
 
@@ -82,9 +81,9 @@ SHARED_FN real environmentTexelsPerRadian(int kind, int side) {
         return real(side) * real(0.25);
     }
     if (kind == ENVIRONMENT_BOX) {
-        return real(side) * real(2) / ENVIRONMENT_PI;
+        return real(side) * real(2) / PI;
     }
-    return real(side) / ENVIRONMENT_PI;
+    return real(side) / PI;
 }
 
 // Where level `level` of an image of side N starts, in texels from the

@@ -4,6 +4,8 @@
 // Built-ins whose bits differ between llvmpipe and GLM (dot, normalize, length,
 // mix, smoothstep, round) are replaced by versions with a fixed evaluation order.
 
+const real PI = real(3.14159265358979);
+
 // The first three components of a parameter slot.
 SHARED_FN vec3 xyz(vec4 q) { return vec3(q.x, q.y, q.z); }
 

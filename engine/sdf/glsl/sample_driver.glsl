@@ -1,8 +1,10 @@
 // The per-sample driver loop, the same code in both backends, bound included.
-// It needs four things from its backend: P(slot), a slot of the parameter
-// buffer, map(p), the scene's field, secondaryRays(), whether the scene
-// has mirrors or glass, and environmentMap(), whether rays that leave the
-// scene see an image (environment_lookup.glsl, which reads T(i)). GLSL: the
+// It needs these from its backend: P(slot), a slot of the parameter buffer,
+// map(p), the scene's field, secondaryRays(), whether the scene has mirrors
+// or glass, environmentMap(), whether rays that leave the scene see an image
+// (environment_lookup.glsl, which reads T(i)), imageTextures(), whether
+// materials have image textures, and setTextureStretch(k), which widens
+// the footprint of the next map()'s image textures (texture_lookup.glsl). GLSL: the
 // generated functions before it; C++: members of the struct this file is
 // included in (cpu/interpreter.inl).
 // One call site of map() (compile cost grows with call sites, see
@@ -33,6 +35,7 @@ SHARED_FN Light sceneLight(int index) {
 SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     TraceSettings settings = sceneTraceSettings();
     TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
+    s.texturedHits = imageTextures();
     Sample field = shapeSample(real(0), s.material);
     RayTree tree = rayTreeBegin();
     // a pixel's angular width at the image centre: the footprint of rays
@@ -42,6 +45,9 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     for (int i = 0; i < limit; ++i) {
         Light light = sceneLight(lightIndex(s));
         if (traceNeedsSample(s)) {
+            if (imageTextures()) {
+                setTextureStretch(textureFootprintStretch(s));
+            }
             field = map(tracePoint(s, light, settings));
             s.evaluations = s.evaluations + 1;
             if (secondaryRays() && s.inside) {
@@ -61,6 +67,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
                 break;
             }
             s = traceBeginNode(rayTreeTop(tree));
+            s.texturedHits = imageTextures();
             tree = rayTreePop(tree);
         }
     }

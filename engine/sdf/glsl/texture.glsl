@@ -9,6 +9,7 @@ const int TEXTURE_NONE = 0;
 const int TEXTURE_CHECKER = 1;  // cubes of side `scale`, alternating
 const int TEXTURE_STRIPES = 2;  // slabs of thickness `scale` stacked along object y
 const int TEXTURE_NOISE = 3;    // value noise of feature size `scale`, two octaves
+const int TEXTURE_IMAGE = 4;    // an image at the primitive's (u, v): texture_lookup.glsl, not a pattern
 
 SHARED_FN real fractr(real x) { return x - floor(x); }
 

@@ -12,6 +12,7 @@ const int PHASE_LIGHT = 4;
 const int PHASE_DONE = 5;
 const int PHASE_LEAVE = 6;  // a primary ray that starts on a surface or inside a solid steps out of it
 const int PHASE_ENTER = 7;  // a primary ray confirms a hit on a thin feature by entering it
+const int PHASE_TEXTURE = 8;  // the hit's material again, its image textures filtered by the normal's slant
 
 const int SHADOW_NONE = 0;
 const int SHADOW_HARD = 1;
@@ -55,6 +56,7 @@ struct TraceState {
     bool inside;        // the ray travels inside a solid: it marches on the negated field
     real pathLength;    // distance from the eye to this ray's origin, for the footprint epsilon
     real enterSlope;    // PHASE_ENTER: the steepest rate of change of the field along the ray so far
+    bool texturedHits;  // the scene has image textures: each hit takes PHASE_TEXTURE (set by the driver)
 };
 
 // A ray of the tree `depth` bounces from the eye, starting pathLength from it.
@@ -63,7 +65,7 @@ SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLen
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       vec3(real(0)), vec3(real(0)), real(0), real(0), real(1), 0, real(0), real(1), real(0),
-                      real(0), vec3(real(1)), vec3(real(0)), depth, inside, pathLength, real(0));
+                      real(0), vec3(real(1)), vec3(real(0)), depth, inside, pathLength, real(0), false);
 }
 
 SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, real(0)); }
@@ -115,7 +117,22 @@ SHARED_FN int lightIndex(TraceState s) { return s.light; }
 
 SHARED_FN bool traceNeedsSample(TraceState s) {
     return s.phase == PHASE_MARCH || s.phase == PHASE_NORMAL || s.phase == PHASE_AO ||
-           s.phase == PHASE_SHADOW || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER;
+           s.phase == PHASE_SHADOW || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER || s.phase == PHASE_TEXTURE;
+}
+
+// Image textures take their mip level from the footprint of a pixel across
+// the ray (texture_lookup.glsl); on a surface seen at a slant the footprint
+// is longer along it by 1 / cos, where a level that small would alias (moire
+// towards the horizon). The texture phase's evaluation widens the footprint
+// by that factor (the larger of the two axes, as mipmapping hardware does),
+// up to 16 (4 levels); every other evaluation by none.
+const real TEXTURE_MAX_STRETCH = real(16);
+SHARED_FN real textureFootprintStretch(TraceState s) {
+    if (s.phase != PHASE_TEXTURE) {
+        return real(1);
+    }
+    real slant = abs(dot3(s.shadingNormal, s.rayDirection));
+    return slant * TEXTURE_MAX_STRETCH > real(1) ? real(1) / slant : TEXTURE_MAX_STRETCH;
 }
 
 SHARED_FN vec3 shadowOrigin(TraceState s) {
@@ -125,6 +142,9 @@ SHARED_FN vec3 shadowOrigin(TraceState s) {
 SHARED_FN vec3 tracePoint(TraceState s, Light light, TraceSettings settings) {
     if (s.phase == PHASE_MARCH || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER) {
         return s.rayOrigin + s.rayDirection * s.t;
+    }
+    if (s.phase == PHASE_TEXTURE) {
+        return s.hitPoint;
     }
     if (s.phase == PHASE_NORMAL && s.counter == 4) {
         return s.hitPoint - normalize3(s.normalSum) * (max(s.occlusion, real(0)) + NORMAL_PROBE * s.hitEpsilon);
@@ -390,6 +410,16 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
     }
     s.normal = normalize3(s.normalSum);
     s.shadingNormal = bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
+    if (s.texturedHits) {
+        s.phase = PHASE_TEXTURE;
+        return s;
+    }
+    return beginOcclusion(s, settings);
+}
+
+// The hit's material with its image textures filtered for the slant.
+SHARED_FN TraceState advanceTexture(TraceState s, Sample field, TraceSettings settings) {
+    s.material = field.material;
     return beginOcclusion(s, settings);
 }
 
@@ -546,6 +576,9 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
     if (s.phase == PHASE_NORMAL) {
         return advanceNormal(s, field, settings);
     }
+    if (s.phase == PHASE_TEXTURE) {
+        return advanceTexture(s, field, settings);
+    }
     if (s.phase == PHASE_AO) {
         return advanceOcclusion(s, field, settings);
     }
@@ -560,8 +593,9 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
 
 // Worst case of loop iterations for one sample: the GLSL backend checks it against
 // llvmpipe's loop limiter. The march's steps (normal samples of a thin hit
-// among them) stop at maxSteps, 5 over at most, then 5 normal samples.
+// among them) stop at maxSteps, 5 over at most, then 5 normal samples and
+// the texture phase's one.
 SHARED_FN int traceIterationBound(TraceSettings settings) {
     int shadowSamples = settings.shadowMode == SHADOW_NONE ? 0 : SHADOW_SAMPLE_CAP;
-    return settings.maxSteps + 10 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
+    return settings.maxSteps + 11 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
 }

@@ -1,10 +1,11 @@
 #pragma once
-// The environment tab's check of its image files off the UI thread: reading
-// an image (and, for a bad one, finding which of the box map's six it is) can
-// take a noticeable moment, so the check runs on a worker whenever the files
-// the scene names change, and the tab shows the last finished answer. Its job
-// also leaves the images in the environment cache (image/environment_images.h),
-// so the viewport's next render finds them read.
+// The check of the scene's image files (the environment map's and the
+// textures') off the UI thread: reading an image (and, for a bad one, finding
+// which of the box map's six it is) can take a noticeable moment, so the
+// check runs on a worker whenever the files the scene names change, and the
+// panels show the last finished answer under each field. Its job also leaves
+// the images in the image cache (image/mipmapped_images.h), so the
+// viewport's next render finds them read.
 
 #include <memory>
 #include <mutex>
@@ -16,12 +17,13 @@
 
 namespace sdfwb::ui {
 
-class EnvironmentCheck {
+class SceneImageCheck {
 public:
-    // Checks the files of `scene`'s environment map unless they are the ones
-    // last asked about; returns at once.
+    // Checks the image files `scene` names unless they are the ones last
+    // asked about; returns at once.
     void request(const scene::Scene& scene);
-    // The last finished check's problems ("environment.image: cannot read ...").
+    // The last finished check's problems ("environment.image: cannot read ...",
+    // "materials[1].texture_image: ...").
     std::vector<std::string> problems() const;
     // The last request's check is still running.
     bool pending() const { return job_ && !job_->finished(); }

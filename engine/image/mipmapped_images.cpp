@@ -1,4 +1,4 @@
-#include "image/environment_images.h"
+#include "image/mipmapped_images.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ int powerOfTwoAtLeast(int size, int maxSide) {
     return side;
 }
 
-float cleanRadiance(float value) { return std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, kMaxEnvironmentRadiance); }
+float cleanRadiance(float value) { return std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, kMaxTexelValue); }
 
 // The image resampled to side x side (OpenImageIO's triangle filter: no
 // negative lobes, so no dark rings around a bright sun), rows from the bottom.
@@ -73,14 +73,14 @@ CacheKey keyOf(const std::vector<std::filesystem::path>& files, int maxSide) {
 
 }  // namespace
 
-EnvironmentImages loadEnvironmentImages(const std::vector<std::filesystem::path>& files, int maxSide) {
+MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& files, int maxSide) {
     std::vector<Image> images;
     int largest = 1;
     for (const std::filesystem::path& file : files) {
-        images.push_back(readImage(file, kMaxEnvironmentFilePixels));
+        images.push_back(readImage(file, kMaxImageFilePixels));
         largest = std::max({largest, images.back().width, images.back().height});
     }
-    EnvironmentImages out;
+    MipmappedImages out;
     out.side = powerOfTwoAtLeast(largest, maxSide);
     out.levels = static_cast<int>(std::lround(std::log2(out.side))) + 1;
     for (std::size_t i = 0; i < images.size(); ++i) {
@@ -90,15 +90,18 @@ EnvironmentImages loadEnvironmentImages(const std::vector<std::filesystem::path>
     return out;
 }
 
-std::shared_ptr<const EnvironmentImages> cachedEnvironmentImages(const std::vector<std::filesystem::path>& files,
+std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
                                                                  int maxSide) {
-    // A few entries: an editor switching between two maps keeps both. A
-    // failure is kept too (as its message), so a renderer asking every frame
-    // does not read a bad file again until it changes (its size or time).
-    constexpr std::size_t kEntries = 6;
+    // Entries up to a texel budget (the most recent always stays): an editor
+    // switching between two maps keeps both, and a scene's textures stay
+    // with its map. A failure is kept too (as its message), so a renderer
+    // asking every frame does not read a bad file again until it changes
+    // (its size or time).
+    constexpr std::size_t kEntries = 32;
+    constexpr std::size_t kTexelBudget = std::size_t(1) << 24;  // 256 MB
     struct Entry {
         CacheKey key;
-        std::shared_ptr<const EnvironmentImages> images;
+        std::shared_ptr<const MipmappedImages> images;
         std::string error;
     };
     static std::mutex mutex;
@@ -119,17 +122,22 @@ std::shared_ptr<const EnvironmentImages> cachedEnvironmentImages(const std::vect
     }
     Entry entry{std::move(key), nullptr, ""};
     try {
-        entry.images = std::make_shared<const EnvironmentImages>(loadEnvironmentImages(files, maxSide));
+        entry.images = std::make_shared<const MipmappedImages>(loadMipmappedImages(files, maxSide));
     } catch (const std::exception& error) {
         entry.error = error.what();
     }
     std::lock_guard lock(mutex);
     entries.push_front(entry);
-    if (entries.size() > kEntries) entries.pop_back();
+    auto texels = [&] {
+        std::size_t total = 0;
+        for (const Entry& e : entries) total += e.images ? e.images->texels.size() : 0;
+        return total;
+    };
+    while (entries.size() > 1 && (entries.size() > kEntries || texels() > kTexelBudget)) entries.pop_back();
     return answer(entry);
 }
 
-std::shared_ptr<const EnvironmentImages> placeholderEnvironmentImages(int count) {
+std::shared_ptr<const MipmappedImages> placeholderImages(int count) {
     constexpr int kSide = 8;
     std::vector<glm::vec4> level0;
     for (int row = 0; row < kSide; ++row) {
@@ -137,7 +145,7 @@ std::shared_ptr<const EnvironmentImages> placeholderEnvironmentImages(int count)
             level0.push_back((row + column) % 2 == 0 ? glm::vec4(1, 0, 1, 1) : glm::vec4(0, 0, 0, 1));
         }
     }
-    auto out = std::make_shared<EnvironmentImages>();
+    auto out = std::make_shared<MipmappedImages>();
     out->side = kSide;
     out->levels = 4;
     std::vector<glm::vec4> mipmaps = buildMipmaps(level0, kSide);

@@ -1,0 +1,52 @@
+#pragma once
+// Images as the shared sampler reads them (sdf/glsl/mipmap_lookup.glsl): an
+// environment map's (lecture notes on realism, 1.5) or a material's texture
+// (1.1), each resampled once to a square of side N = 2^n, rows from the
+// bottom, with its mipmaps (image/mipmaps.h), image after image in one texel
+// array that the GL backend uploads as a buffer texture and the CPU backend
+// reads directly.
+
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace sdfwb::image {
+
+struct MipmappedImages {
+    int side = 0;    // N, the same for every image
+    int levels = 0;  // n + 1
+    std::vector<glm::vec4> texels;
+};
+
+// N is the least power of two at least every image's width and height, at
+// most this: 1024 for a single image (22 MB of texels with its mipmaps),
+// 512 for each of a box map's six faces (34 MB) and for a texture (6 MB).
+inline constexpr int kMaxEnvironmentSide = 1024;
+inline constexpr int kMaxBoxFaceSide = 512;
+inline constexpr int kMaxTextureSide = 512;
+// Files larger than this many pixels are refused before they are read.
+inline constexpr std::size_t kMaxImageFilePixels = std::size_t(1) << 24;
+// Texel values are clamped to [0, this]; NaN becomes 0 (a few bad pixels in
+// an HDR file must not turn the whole frame non-finite).
+inline constexpr float kMaxTexelValue = 1e9f;
+
+// Reads and converts the images (8-bit files decoded from sRGB to linear).
+// Throws std::runtime_error "cannot read image PATH: reason".
+MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& files, int maxSide);
+
+// loadMipmappedImages through a small cache keyed by the files' paths,
+// sizes and modification times, so rendering a scene again (every edit) does
+// not read its images again; failures are cached as well and thrown again.
+// Thread-safe.
+std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
+                                                                 int maxSide);
+
+// What a map or texture shows when its images cannot be read (the editor
+// still opens the scene): a magenta and black checkerboard, `count` images of
+// side 8.
+std::shared_ptr<const MipmappedImages> placeholderImages(int count);
+
+}  // namespace sdfwb::image

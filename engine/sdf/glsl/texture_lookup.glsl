@@ -1,0 +1,71 @@
+// Image textures (lecture notes on realism, 1.1): a primitive's sample with
+// its ambient and diffuse colour multiplied by its image at the point's
+// (u, v) (texture_mapping.glsl), filtered by the notes' mipmaps over the
+// sample's footprint, widened by textureStretch (the backend's: the tracer
+// sets it for the evaluation whose material it shades, tracer.glsl's
+// textureFootprintStretch). Needs the shared mipmap sampler
+// (mipmap_lookup.glsl), so it follows T(i) like it; the generated map()
+// calls it as the ImageTexture opcode.
+//
+// q0 = (mapping, (u, v) units per scene unit of footprint at distance 1, 0, 0),
+// q1, q2 = the primitive's slots as its mapping reads them,
+// q3 = (first texel, side, levels, 0) of the image: filled in where the
+// images are read (program/scene_images.cpp), so another file is a parameter edit.
+SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+    int start = int(q3.x);
+    int side = int(q3.y);
+    int levels = int(q3.z);
+    int mapping = int(q0.x);
+    if (mapping == MAP_MEAN) {
+        return sampleMipmap(start, side, levels, real(0.5), real(0.5), real(levels - 1), false, false);
+    }
+    TexturePoint t = texturePoint(mapping, p, q1, q2);
+    // a wrapped coordinate reduced to [0, 1) first keeps its texel accurate
+    // far along a tiled plane; clamping turns a NaN into 0 (as environments do)
+    real u = clamp(t.wrapU ? fractr(t.u) : t.u, real(0), real(1));
+    real v = clamp(t.wrapV ? fractr(t.v) : t.v, real(0), real(1));
+    real lod = mipLevelOfFootprint(q0.y * distance * textureStretch * real(side));
+    return sampleMipmap(start, side, levels, u, v, lod, t.wrapU, t.wrapV);
+}
+
+// ---- ImageTexture: S[dst] = f(S[a], P[b], P[0], slots) ----
+SHARED_FN Sample instImageTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+    vec3 c = imageTextureColor(p, length3(eye), q0, q1, q2, q3);
+    Material m = s.material;
+    m.ambient = m.ambient * c;
+    m.diffuse = m.diffuse * c;
+    return Sample(s.d, s.step, m);
+}
+
+// Triplanar mapping, for primitives without a parametrization (formulas):
+// the image projected along each object axis, in tiles of the texture's
+// scale, the three blended by the fourth powers of the object-space normal's
+// components, so each projection shows where it is least stretched. The
+// normal is the formula's gradient at the point, which the instruction reads
+// with the formula (value, gradient) like an implicit surface.
+SHARED_FN vec3 triplanarColor(vec3 p, vec3 gradient, real distance, vec4 q0, vec4 q1) {
+    int start = int(q1.x);
+    int side = int(q1.y);
+    int levels = int(q1.z);
+    vec3 a = abs(normalize3(gradient));
+    vec3 w = a * a * a * a;
+    real total = w.x + w.y + w.z;
+    w = total > real(0) ? w / total : vec3(real(1) / real(3));
+    vec3 t = p * q0.x;
+    real lod = mipLevelOfFootprint(q0.y * distance * textureStretch * real(side));
+    vec3 alongX = sampleMipmap(start, side, levels, fractr(t.z), fractr(t.y), lod, true, true);
+    vec3 alongY = sampleMipmap(start, side, levels, fractr(t.x), fractr(t.z), lod, true, true);
+    vec3 alongZ = sampleMipmap(start, side, levels, fractr(t.x), fractr(t.y), lod, true, true);
+    return alongX * w.x + alongY * w.y + alongZ * w.z;
+}
+
+// ---- TriplanarTexture: S[dst] = f(S[a], P[b], P[0], formula value and gradient at P[b], slots) ----
+// q0 = (tiles per object unit, tiles per scene unit of footprint at distance 1, 0, 0),
+// q1 = (first texel, side, levels, 0) of the image, filled in like ImageTexture's q3.
+SHARED_FN Sample instTriplanarTexture(Sample s, vec3 p, vec3 eye, vec4 v, vec4 q0, vec4 q1) {
+    vec3 c = triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1);
+    Material m = s.material;
+    m.ambient = m.ambient * c;
+    m.diffuse = m.diffuse * c;
+    return Sample(s.d, s.step, m);
+}
