@@ -86,6 +86,20 @@ TEST_F(Cli, InvalidSceneGivesOneLinePerProblemAndNoFile) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(Cli, AMissingTextureImageIsNamedByItsFieldAndWritesNothing) {
+    fs::path scene = path("textured.json"), out = path("out.png");
+    std::ofstream(scene) << R"({"format": "sdf-workbench-scene", "version": 1,
+        "materials": [{"name": "wood", "texture": "image", "texture_image": "wood.png"}],
+        "root": {"kind": "sphere", "material": "wood"}})";
+    ProcessResult r = run("render " + scene.string() + " -o " + out.string());
+    EXPECT_EQ(r.exitCode, 2);
+    const std::string expected = "sdf-workbench render: " + scene.string() +
+                                 ": materials[0].texture_image: cannot read image " + path("wood.png").string() + ": ";
+    EXPECT_EQ(r.output.rfind(expected, 0), 0u) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1);
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, MalformedJsonNamesLineAndColumn) {
     fs::path scene = path("broken.json");
     std::ofstream(scene) << "{\n  \"format\": \"sdf-workbench-scene\"\n  \"version\": 1\n}";

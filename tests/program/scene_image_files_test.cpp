@@ -1,0 +1,147 @@
+// The scene's image files as it names them (program/scene_images.h), the
+// environment map's and the textures': resolved against the scene's folder,
+// only those the chosen map and the image textures read, a missing name
+// reported by its key, names rebased when the scene moves, each file read
+// once and placed in the texel buffer after the environment's.
+
+#include <gtest/gtest.h>
+
+#include "program/compile_scene.h"
+#include "program/scene_images.h"
+#include "scene/scene_validation.h"
+
+namespace sdfwb::program {
+namespace {
+
+scene::Scene boxMapIn(const std::string& folder) {
+    scene::Scene s;
+    s.directory.path = folder;
+    s.environment.map = scene::EnvironmentMapKind::Box;
+    s.environment.image = "ignored.png";  // the box map reads its faces only
+    s.environment.boxPositiveX = "faces/px.png";
+    s.environment.boxNegativeX = "../shared/nx.png";
+    s.environment.boxPositiveY = "/absolute/py.png";
+    s.environment.boxNegativeY = "ny.png";
+    s.environment.boxPositiveZ = "pz.png";
+    s.environment.boxNegativeZ = "";
+    return s;
+}
+
+TEST(EnvironmentFiles, AreTheChosenMapsResolvedAgainstTheScenesFolder) {
+    std::vector<SceneImageFile> files = environmentFiles(boxMapIn("/scenes/tutorial"));
+    ASSERT_EQ(files.size(), 6u);
+    EXPECT_EQ(files[0].key, "environment.box_px");
+    EXPECT_EQ(files[0].path, "/scenes/tutorial/faces/px.png");
+    EXPECT_EQ(files[1].path, "/scenes/shared/nx.png");
+    EXPECT_EQ(files[2].path, "/absolute/py.png");
+    scene::Scene colour;
+    colour.environment.image = "sky.png";
+    EXPECT_TRUE(environmentFiles(colour).empty());
+}
+
+TEST(EnvironmentFiles, AFaceWithoutANameIsAProblemNamedByItsKey) {
+    std::vector<std::string> problems = environmentProblems(boxMapIn("/nonexistent-folder"));
+    ASSERT_EQ(problems.size(), 6u);  // five that cannot be read, one not given
+    EXPECT_EQ(problems[5], "environment.box_nz: the box map needs an image file here");
+    EXPECT_EQ(problems[0].rfind("environment.box_px: cannot read image /nonexistent-folder/faces/px.png", 0), 0u)
+        << problems[0];
+}
+
+TEST(EnvironmentFiles, MovingTheSceneKeepsItsRelativeNamesPointingAtTheSameFiles) {
+    scene::Scene s = boxMapIn("/scenes/tutorial");
+    std::vector<SceneImageFile> before = environmentFiles(s);
+    moveSceneDirectory(s, "/elsewhere/deep");
+    EXPECT_EQ(s.directory.path, "/elsewhere/deep");
+    EXPECT_EQ(s.environment.boxPositiveX, "../../scenes/tutorial/faces/px.png");
+    EXPECT_EQ(s.environment.boxPositiveY, "/absolute/py.png");  // absolute names stay
+    EXPECT_EQ(s.environment.boxNegativeZ, "");
+    std::vector<SceneImageFile> after = environmentFiles(s);
+    for (size_t i = 0; i < before.size(); ++i) {
+        if (!before[i].name.empty()) EXPECT_EQ(after[i].path, before[i].path) << before[i].key;  // "" names no file
+    }
+}
+
+scene::Scene texturedIn(const std::string& folder) {
+    scene::Scene s;
+    s.directory.path = folder;
+    auto material = [&](const char* name, scene::TexturePattern pattern, const char* file) {
+        scene::Material m;
+        m.name = name;
+        m.texture = pattern;
+        m.textureImage = file;
+        s.materials.push_back(m);
+    };
+    material("wood", scene::TexturePattern::Image, "textures/wood.png");
+    material("checks", scene::TexturePattern::Checker, "ignored.png");  // a pattern reads no file
+    material("unnamed", scene::TexturePattern::Image, "");
+    material("oak", scene::TexturePattern::Image, "textures/wood.png");
+    return s;
+}
+
+TEST(TextureFiles, AreTheImageTexturesResolvedAgainstTheScenesFolder) {
+    std::vector<SceneImageFile> files = textureFiles(texturedIn("/scenes/tutorial"));
+    ASSERT_EQ(files.size(), 3u);
+    EXPECT_EQ(files[0].key, "materials[0].texture_image");
+    EXPECT_EQ(files[0].path, "/scenes/tutorial/textures/wood.png");
+    EXPECT_EQ(files[1].key, "materials[2].texture_image");
+    EXPECT_EQ(files[2].key, "materials[3].texture_image");
+}
+
+TEST(TextureFiles, AMissingOrUnreadableFileIsAProblemNamedByItsKey) {
+    std::vector<std::string> problems = textureProblems(texturedIn("/nonexistent-folder"));
+    ASSERT_EQ(problems.size(), 3u);
+    EXPECT_EQ(problems[0].rfind("materials[0].texture_image: cannot read image /nonexistent-folder/textures/wood.png", 0),
+              0u)
+        << problems[0];
+    EXPECT_EQ(problems[1], "materials[2].texture_image: an image texture needs an image file here");
+}
+
+TEST(TextureFiles, MovingTheSceneRebasesTheTexturesToo) {
+    scene::Scene s = texturedIn("/scenes/tutorial");
+    moveSceneDirectory(s, "/elsewhere");
+    EXPECT_EQ(s.materials[0].textureImage, "../scenes/tutorial/textures/wood.png");
+    EXPECT_EQ(textureFiles(s)[0].path, "/scenes/tutorial/textures/wood.png");
+}
+
+TEST(TextureFiles, MaterialsNamingOneFileShareItsImageInTheTexelBuffer) {
+    scene::Scene s = texturedIn("/nonexistent-folder");
+    s.materials[2].textureImage = "other.png";
+    for (const char* name : {"wood", "oak", "unnamed"}) {
+        scene::Node ball = scene::Node::make(scene::NodeKind::Sphere);
+        ball.set("material", std::string(name));
+        s.root.children.push_back(ball);
+    }
+    Program p = compileScene(s);
+    ASSERT_EQ(p.textureFiles.size(), 2u);
+    ASSERT_EQ(p.textureSlots.size(), 3u);
+    EXPECT_EQ(p.textureSlots[0].file, 0);
+    EXPECT_EQ(p.textureSlots[1].file, 0);
+    EXPECT_EQ(p.textureSlots[2].file, 1);
+    // unreadable: each file its own placeholder, one after the other
+    ResolvedImages images = resolveImages(p);
+    ASSERT_EQ(images.textures.size(), 2u);
+    ASSERT_EQ(images.slots.size(), 3u);
+    EXPECT_EQ(images.slots[0].second.x, 0.0);
+    EXPECT_EQ(images.slots[2].second.x, static_cast<double>(images.textures[0]->texels.size()));
+    EXPECT_EQ(images.slots[2].second.y, images.textures[1]->side);
+}
+
+TEST(TextureFiles, ASceneNamesAtMostSixteenImages) {
+    scene::Scene s;
+    for (int i = 0; i <= scene::kMaxTextureImages; ++i) {
+        scene::Material m;
+        m.name = "m" + std::to_string(i);
+        m.texture = scene::TexturePattern::Image;
+        m.textureImage = "image" + std::to_string(i) + ".png";
+        s.materials.push_back(m);
+    }
+    std::vector<std::string> problems = scene::validateScene(s);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].find("materials[16].texture_image"), std::string::npos) << problems[0];
+    EXPECT_NE(problems[0].find("at most 16 texture images"), std::string::npos) << problems[0];
+    s.materials.back().textureImage = "image0.png";  // the same file again is no new image
+    EXPECT_TRUE(scene::validateScene(s).empty());
+}
+
+}  // namespace
+}  // namespace sdfwb::program
