@@ -283,6 +283,7 @@ Problems Editor::setJsonValue(std::string_view jsonPath, const json& value, std:
     } catch (const scene::SceneError& error) {
         return error.problems();
     }
+    candidate.directory = scene_.directory;  // not in the document: image names stay relative to the same folder
     return commit("Set " + walked, std::move(candidate), selection_, mergeKey);
 }
 

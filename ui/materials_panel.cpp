@@ -39,7 +39,7 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
             }
             const std::string path = "materials[" + std::to_string(i) + "]";
             for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
-                if (row.type != scene::SettingType::Text) {
+                if (row.type != scene::SettingType::ImageFile) {
                     set("Edit material", settingWidget(row, m));  // the name has its own field above
                 } else if (m.texture == scene::TexturePattern::Image) {
                     std::string& name = m.*std::get<std::string scene::Material::*>(row.member);

@@ -45,7 +45,8 @@ WidgetEdit settingWidgetOnly(const scene::Setting<Owner>& row, Owner& owner, dou
         bool changed = ImGui::Checkbox(label.c_str(), &(owner.*std::get<bool Owner::*>(row.member)));
         return {changed, changed};
     }
-    case SettingType::Text: break;  // names and references have their own widgets
+    case SettingType::Text:
+    case SettingType::ImageFile: break;  // names, references and files have their own widgets
     }
     return {};
 }
@@ -83,6 +84,7 @@ std::string settingHint(const scene::Setting<Owner>& row) {
     case SettingType::Vector:
     case SettingType::Flag:
     case SettingType::Text: break;
+    case SettingType::ImageFile: allowed = "an image file (PNG, JPEG, TIFF, EXR), relative to the scene file's folder"; break;
     }
     if (!allowed.empty()) hint += "\nallowed: " + allowed;
     if (row.type == SettingType::Integer || row.type == SettingType::Real) hint += "\nCtrl+click or double-click to type a value";

@@ -42,7 +42,7 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
     std::vector<program::SceneImageFile> files = program::environmentFiles(editor.scene());
     for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) {
         std::string path = "environment." + std::string(row.key);
-        if (row.type != scene::SettingType::Text) {
+        if (row.type != scene::SettingType::ImageFile) {
             set(settingWidget(row, e), path);
             continue;
         }

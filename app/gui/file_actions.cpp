@@ -32,7 +32,11 @@ std::string saveScene(AppState& app, const fs::path& path) {
         // saved elsewhere, the scene's image files keep their names relative to its new folder
         scene::Scene moved = app.editor.scene();
         program::moveSceneDirectory(moved, fs::absolute(path).parent_path());
-        if (moved != app.editor.scene()) app.editor.apply("Save in another folder", [&](scene::Scene& s) { s = moved; });
+        if (moved != app.editor.scene()) {
+            // refused, the old names would be saved where they name other files (or none)
+            ui::Problems refused = app.editor.apply("Save in another folder", [&](scene::Scene& s) { s = moved; });
+            if (!refused.empty()) throw std::runtime_error("cannot save " + path.string() + ": " + refused.front());
+        }
         scene::saveSceneFile(app.editor.scene(), path);
         app.editor.setDirectory(fs::absolute(path).parent_path().string());
     } catch (const std::exception& error) {

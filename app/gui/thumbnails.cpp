@@ -47,6 +47,7 @@ void* Thumbnails::lookup(const scene::Scene& scene, std::uint64_t revision, cons
         alone.environment = scene.environment;
         alone.lights = scene.lights;
         alone.materials = scene.materials;
+        alone.directory = scene.directory;  // image files are named relative to it
         alone.root = node;
         alone.environment.ground.enabled = false;
         alone.camera = ui::framedCamera(scene.camera, node);

@@ -124,13 +124,13 @@ void moveSceneDirectory(scene::Scene& scene, const std::filesystem::path& direct
         if (!moved.empty()) name = moved.generic_string();
     };
     for (const scene::Setting<scene::Environment>& row : scene::environmentSettings()) {
-        if (row.type == scene::SettingType::Text) {
+        if (row.type == scene::SettingType::ImageFile) {
             rebase(scene.environment.*std::get<std::string scene::Environment::*>(row.member));
         }
     }
     for (scene::Material& m : scene.materials) {
         for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
-            if (row.type == scene::SettingType::Text) rebase(m.*std::get<std::string scene::Material::*>(row.member));
+            if (row.type == scene::SettingType::ImageFile) rebase(m.*std::get<std::string scene::Material::*>(row.member));
         }
     }
     scene.directory.path = to.string();

@@ -187,7 +187,8 @@ void readSetting(Reader& reader, const Setting<Owner>& row, const json& value, c
         return;
     }
     case SettingType::Flag: reader.flag(value, path, owner.*std::get<bool Owner::*>(row.member)); return;
-    case SettingType::Text: reader.string(value, path, owner.*std::get<std::string Owner::*>(row.member)); return;
+    case SettingType::Text:
+    case SettingType::ImageFile: reader.string(value, path, owner.*std::get<std::string Owner::*>(row.member)); return;
     }
 }
 

@@ -74,7 +74,8 @@ SettingProblem settingProblem(const Setting<Owner>& row, const Owner& owner) {
     }
     case SettingType::Choice:
     case SettingType::Flag:
-    case SettingType::Text: return {};
+    case SettingType::Text:
+    case SettingType::ImageFile: return {};
     }
     return {};
 }

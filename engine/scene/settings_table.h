@@ -46,6 +46,7 @@ enum class SettingType {
     Direction,  // glm::dvec3, not zero
     Flag,       // bool
     Text,       // std::string
+    ImageFile,  // std::string: an image file's name, relative to the scene file's folder
 };
 
 enum class RealRange {

@@ -70,7 +70,8 @@ std::vector<Owner> edgeValues(const Setting<Owner>& row, const Owner& owner) {
         break;
     case SettingType::Choice:
     case SettingType::Flag:
-    case SettingType::Text: break;
+    case SettingType::Text:
+    case SettingType::ImageFile: break;
     }
     return out;
 }
