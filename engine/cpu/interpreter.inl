@@ -39,7 +39,7 @@ inline auto withSlots(const vec4* q, F f) {
 // texelFetch does.
 struct Texels {
     const program::ResolvedImages* images = nullptr;  // null: no images (picking, point queries)
-    real textureStretch = real(1);  // the footprint factor of image textures (sample_driver.glsl)
+    real textureStretch = real(1);  // the footprint factor of image textures, 0: no colour needed (sample_driver.glsl)
 
     vec4 T(int i) const {
         if (images == nullptr || i < 0) return vec4(real(0));

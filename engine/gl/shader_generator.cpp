@@ -34,7 +34,7 @@ uniform samplerBuffer uTexels;
 vec4 T(int i) { return texelFetch(uTexels, i); }
 )";
 constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
-// The footprint factor of image textures, set by the driver (sample_driver.glsl).
+// The footprint factor of image textures (0: no colour needed), set by the driver (sample_driver.glsl).
 constexpr std::string_view kTextureStretch = R"(
 float textureStretch = 1.0;
 void setTextureStretch(float k) { textureStretch = k; }

@@ -29,7 +29,11 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
 }
 
 // ---- ImageTexture: S[dst] = f(S[a], P[b], P[0], slots) ----
+// A textureStretch of 0: the evaluation's colour is not shaded, nothing to look up.
 SHARED_FN Sample instImageTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+    if (!(textureStretch > real(0))) {
+        return s;
+    }
     vec3 c = imageTextureColor(p, length3(eye), q0, q1, q2, q3);
     Material m = s.material;
     m.ambient = m.ambient * c;
@@ -63,6 +67,9 @@ SHARED_FN vec3 triplanarColor(vec3 p, vec3 gradient, real distance, vec4 q0, vec
 // q0 = (tiles per object unit, tiles per scene unit of footprint at distance 1, 0, 0),
 // q1 = (first texel, side, levels, 0) of the image, filled in like ImageTexture's q3.
 SHARED_FN Sample instTriplanarTexture(Sample s, vec3 p, vec3 eye, vec4 v, vec4 q0, vec4 q1) {
+    if (!(textureStretch > real(0))) {
+        return s;
+    }
     vec3 c = triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1);
     Material m = s.material;
     m.ambient = m.ambient * c;

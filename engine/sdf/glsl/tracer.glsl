@@ -125,11 +125,15 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
 // is longer along it by 1 / cos, where a level that small would alias (moire
 // towards the horizon). The texture phase's evaluation widens the footprint
 // by that factor (the larger of the two axes, as mipmapping hardware does),
-// up to 16 (4 levels); every other evaluation by none.
+// up to 16 (4 levels). Its material is the only one shaded: every other
+// evaluation (march, normal, AO and shadow samples) reads distances, the
+// bump height and the transparency, which textures do not change, so for
+// those the factor is 0, "no colour needed", and the textures skip their
+// lookups.
 const real TEXTURE_MAX_STRETCH = real(16);
 SHARED_FN real textureFootprintStretch(TraceState s) {
     if (s.phase != PHASE_TEXTURE) {
-        return real(1);
+        return real(0);
     }
     real slant = abs(dot3(s.shadingNormal, s.rayDirection));
     return slant * TEXTURE_MAX_STRETCH > real(1) ? real(1) / slant : TEXTURE_MAX_STRETCH;
