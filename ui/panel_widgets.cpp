@@ -9,8 +9,8 @@
 #include <vector>
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 #include <imgui_internal.h>  // GetItemID: the merge key of a drag; the typed text of a drag field
+#include <imgui_stdlib.h>
 
 #include "image/encoding.h"
 #include "io/quoted_text.h"
@@ -187,9 +187,10 @@ void reportProblems(UiState& ui, const Problems& problems) {
 bool imageFileField(const char* label, const std::string& key, std::string& name) {
     ImGui::InputTextWithHint(label, "image file, relative to the scene", &name);
     if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("JSON key %s\nPNG, JPEG, TIFF or EXR; relative to the scene file's folder\n"
-                          "Enter or leaving the field applies it",
-                          key.c_str());
+        ImGui::SetTooltip(
+            "JSON key %s\nPNG, JPEG, TIFF or EXR; relative to the scene file's folder\n"
+            "Enter or leaving the field applies it",
+            key.c_str());
     }
     return ImGui::IsItemDeactivatedAfterEdit();
 }

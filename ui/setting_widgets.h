@@ -84,7 +84,9 @@ std::string settingHint(const scene::Setting<Owner>& row) {
     case SettingType::Vector:
     case SettingType::Flag:
     case SettingType::Text: break;
-    case SettingType::ImageFile: allowed = "an image file (PNG, JPEG, TIFF, EXR), relative to the scene file's folder"; break;
+    case SettingType::ImageFile:
+        allowed = "an image file (PNG, JPEG, TIFF, EXR), relative to the scene file's folder";
+        break;
     }
     if (!allowed.empty()) hint += "\nallowed: " + allowed;
     if (row.type == SettingType::Integer || row.type == SettingType::Real) hint += "\nCtrl+click or double-click to type a value";

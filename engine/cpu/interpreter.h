@@ -10,8 +10,8 @@
 
 #include "expr/tape.h"
 #include "image/mipmapped_images.h"
-#include "program/scene_images.h"
 #include "program/program.h"
+#include "program/scene_images.h"
 #include "prune/prune_grid.h"
 #include "sdf/shared.h"
 

@@ -16,8 +16,8 @@
 
 #include "glcontext/gl_functions.h"
 #include "glcontext/gl_object.h"
-#include "image/mipmapped_images.h"
 #include "image/image.h"
+#include "image/mipmapped_images.h"
 #include "program/program.h"
 #include "program/scene_images.h"
 #include "render/render_control.h"

@@ -213,7 +213,8 @@ std::string generateFragmentShader(const program::Program& program) {
     const bool texels = environmentMap || !program.textureFiles.empty();
     std::ostringstream out;
     out << "#version 330 core\n"
-        << sdf::glslPrelude() << sdf::glslLibrary() << kInterface << kParameters
+        << sdf::glslPrelude() << sdf::glslLibrary() << kInterface
+        << kParameters
         // scenes without images read no texels
         << (texels ? kTexels : kNoTexels) << kTextureStretch << sdf::glslTextureLookup()
         << generateMapFunction(program)

@@ -91,7 +91,7 @@ MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& fi
 }
 
 std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
-                                                                 int maxSide) {
+                                                             int maxSide) {
     // Entries up to a texel budget (the most recent always stays): an editor
     // switching between two maps keeps both, and a scene's textures stay
     // with its map. A failure is kept too (as its message), so a renderer

@@ -42,7 +42,7 @@ MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& fi
 // not read its images again; failures are cached as well and thrown again.
 // Thread-safe.
 std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
-                                                                 int maxSide);
+                                                             int maxSide);
 
 // What a map or texture shows when its images cannot be read (the editor
 // still opens the scene): a magenta and black checkerboard, `count` images of

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <map>
 
-#include "program/bounds.h"
-#include "program/scene_images.h"
 #include "expr/derivative.h"
 #include "expr/formula.h"
+#include "program/bounds.h"
 #include "program/rotation.h"
+#include "program/scene_images.h"
 #include "program/texture_mapping.h"
 #include "scene/camera_frame.h"
 #include "scene/visibility.h"
@@ -327,9 +327,9 @@ private:
         const Instruction& shape = program_.code.back();  // the primitive just emitted
         if (opcodeInfo(shape.op).opClass == OpClass::FormulaShape ||
             opcodeInfo(shape.op).opClass == OpClass::FormulaSample) {
-            int gradient =
-                shape.op == Opcode::ImplicitFormula ? shape.variant
-                                                    : addFormula(node.text("formula"), FormulaLanguage::Sdf, true);
+            int gradient = shape.op == Opcode::ImplicitFormula
+                               ? shape.variant
+                               : addFormula(node.text("formula"), FormulaLanguage::Sdf, true);
             double tiles = 1.0 / m.textureScale;
             int param = addParams({dvec4(tiles, footprintPerDistance * tiles / objectScale_, 0, 0), dvec4(0.0)});
             program_.textureSlots.push_back({param + 1, fileIndex});

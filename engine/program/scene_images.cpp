@@ -130,7 +130,8 @@ void moveSceneDirectory(scene::Scene& scene, const std::filesystem::path& direct
     }
     for (scene::Material& m : scene.materials) {
         for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
-            if (row.type == scene::SettingType::ImageFile) rebase(m.*std::get<std::string scene::Material::*>(row.member));
+            if (row.type == scene::SettingType::ImageFile)
+                rebase(m.*std::get<std::string scene::Material::*>(row.member));
         }
     }
     scene.directory.path = to.string();
@@ -164,8 +165,9 @@ ResolvedImages resolveImages(const Program& program) {
     }
     for (const Program::TextureSlot& use : program.textureSlots) {
         const image::MipmappedImages& texture = *out.textures[static_cast<std::size_t>(use.file)];
-        out.slots.emplace_back(use.slot, glm::dvec4(static_cast<double>(out.textureStart(static_cast<std::size_t>(use.file))),
-                                                    texture.side, texture.levels, 0.0));
+        out.slots.emplace_back(use.slot,
+                               glm::dvec4(static_cast<double>(out.textureStart(static_cast<std::size_t>(use.file))),
+                                          texture.side, texture.levels, 0.0));
     }
     return out;
 }

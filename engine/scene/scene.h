@@ -83,9 +83,9 @@ struct Material {
     // the object-space point mixes ambient and diffuse towards textureColor;
     // an image, at the primitive's (u, v), multiplies them.
     TexturePattern texture = TexturePattern::None;
-    double textureScale = 0.25;           // cell, slab, noise feature or image tile size, object units
+    double textureScale = 0.25;  // cell, slab, noise feature or image tile size, object units
     glm::dvec3 textureColor{0.1};
-    std::string textureImage;             // file, relative to the scene's folder
+    std::string textureImage;  // file, relative to the scene's folder
     // Bump map (sdf/glsl/texture.glsl): a height field of the object-space
     // point that perturbs the shading normal; the surface stays as it is.
     BumpPattern bump = BumpPattern::None;

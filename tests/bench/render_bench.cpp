@@ -172,8 +172,18 @@ void imageTextureCost(benchmark::State& state, bool gl) {
     program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
     renderEachIteration(state, p, gl);
 }
-BENCHMARK_CAPTURE(imageTextureCost, cpu, false)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK_CAPTURE(imageTextureCost, gl, true)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(imageTextureCost, cpu, false)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK_CAPTURE(imageTextureCost, gl, true)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 
 }  // namespace
 }  // namespace sdfwb

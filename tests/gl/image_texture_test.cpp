@@ -86,6 +86,19 @@ protected:
         gl::GlBackend glBackend(context());
         return parity::measureParity(s, cpu, glBackend, {.width = 64, .height = 64, .aa = 1});
     }
+
+    // Both backends agree and show the image upright on the face towards the
+    // eye, which spans pixels 13 to 51: each quadrant a quarter in from its corner.
+    void expectUprightImage(const scene::Scene& s) {
+        parity::ParityResult r = render(s);
+        EXPECT_TRUE(r.passes);
+        for (const image::Image* frame : {&r.cpuColor, &r.glColor}) {
+            expectColour(pixel(*frame, 22, 22), kQuadrants[0], "top left");
+            expectColour(pixel(*frame, 42, 22), kQuadrants[1], "top right");
+            expectColour(pixel(*frame, 22, 42), kQuadrants[2], "bottom left");
+            expectColour(pixel(*frame, 42, 42), kQuadrants[3], "bottom right");
+        }
+    }
 };
 
 TEST_F(ImageTexture, ABoxFaceSeenHeadOnShowsItsImageUpright) {
@@ -93,15 +106,7 @@ TEST_F(ImageTexture, ABoxFaceSeenHeadOnShowsItsImageUpright) {
     box.set("half_extents", glm::dvec3(1.2));
     scene::Scene s = flatLit(box);
     EXPECT_TRUE(program::sceneImageProblems(s).empty());
-    parity::ParityResult r = render(s);
-    EXPECT_TRUE(r.passes);
-    for (const image::Image* frame : {&r.cpuColor, &r.glColor}) {
-        // the face spans pixels 13 to 51; a quarter of it in from each corner
-        expectColour(pixel(*frame, 22, 22), kQuadrants[0], "top left");
-        expectColour(pixel(*frame, 42, 22), kQuadrants[1], "top right");
-        expectColour(pixel(*frame, 22, 42), kQuadrants[2], "bottom left");
-        expectColour(pixel(*frame, 42, 42), kQuadrants[3], "bottom right");
-    }
+    expectUprightImage(s);
 }
 
 TEST_F(ImageTexture, AFormulaShowsItsImageTriplanarAlongItsNormal) {
@@ -113,14 +118,7 @@ TEST_F(ImageTexture, AFormulaShowsItsImageTriplanarAlongItsNormal) {
     scene::Scene s = flatLit(formula);
     s.materials[0].textureScale = 2.4;
     s.camera.target = glm::dvec3(1.2, 1.2, 0);
-    parity::ParityResult r = render(s);
-    EXPECT_TRUE(r.passes);
-    for (const image::Image* frame : {&r.cpuColor, &r.glColor}) {
-        expectColour(pixel(*frame, 22, 22), kQuadrants[0], "top left");
-        expectColour(pixel(*frame, 42, 22), kQuadrants[1], "top right");
-        expectColour(pixel(*frame, 22, 42), kQuadrants[2], "bottom left");
-        expectColour(pixel(*frame, 42, 42), kQuadrants[3], "bottom right");
-    }
+    expectUprightImage(s);
 }
 
 TEST_F(ImageTexture, AMissingFileIsNamedAndRendersAsThePlaceholder) {

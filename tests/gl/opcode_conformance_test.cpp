@@ -22,13 +22,13 @@
 
 #include "cpu/interpreter.h"
 #include "gl/shader_generator.h"
-#include "image/mipmaps.h"
-#include "image/mipmapped_images.h"
-#include "program/scene_images.h"
 #include "gl_test_support.h"
 #include "glcontext/fragment_evaluator.h"
+#include "image/mipmapped_images.h"
+#include "image/mipmaps.h"
 #include "program/compile_scene.h"
 #include "program/opcodes.h"
+#include "program/scene_images.h"
 #include "sdf/glsl_sources.h"
 
 namespace sdfwb {
@@ -148,7 +148,8 @@ std::vector<ConformanceCase> conformanceCases() {
           {dvec4(shared::MAP_CAPSULE, 0.01, 0, 0), dvec4(1, 1, 1, 0.5), dvec4(1, 1, 1, 0), dvec4(0, 8, 4, 0)},
           {dvec4(shared::MAP_MEAN, 0.01, 0, 0), dvec4(0), dvec4(0), dvec4(0, 8, 4, 0)}}},
         {Opcode::TriplanarTexture,
-         {{dvec4(4, 0.01, 0, 0), dvec4(0, 8, 4, 0)}, {dvec4(0.5, 0.3, 0, 0), dvec4(0, 8, 4, 0)},
+         {{dvec4(4, 0.01, 0, 0), dvec4(0, 8, 4, 0)},
+          {dvec4(0.5, 0.3, 0, 0), dvec4(0, 8, 4, 0)},
           {dvec4(1e3, kHuge, 0, 0), dvec4(0, 8, 4, 0)}},
          "let q = abs(p) - vec3(0.8, 0.5, 0.6); length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - 0.15"},
         {Opcode::Bump,
@@ -326,7 +327,8 @@ std::int64_t unitUlpsApart(float cpu, float gl) {
 // and its mipmaps, as the texel buffer's only image.
 program::ResolvedImages conformanceTexels() {
     std::vector<glm::vec4> level0;
-    for (int i = 0; i < 64; ++i) level0.emplace_back(0.01f * float(i), 1.0f - 0.013f * float(i), 0.1f + float(i % 7) * 0.1f, 1);
+    for (int i = 0; i < 64; ++i)
+        level0.emplace_back(0.01f * float(i), 1.0f - 0.013f * float(i), 0.1f + float(i % 7) * 0.1f, 1);
     auto images = std::make_shared<image::MipmappedImages>();
     images->side = 8;
     images->levels = 4;
@@ -337,7 +339,8 @@ program::ResolvedImages conformanceTexels() {
 }
 
 // The texel accessor: the buffer for the cases that read it, else nothing.
-constexpr std::string_view kTexels = "uniform samplerBuffer uTexels;\nvec4 T(int i) { return texelFetch(uTexels, i); }\n";
+constexpr std::string_view kTexels =
+    "uniform samplerBuffer uTexels;\nvec4 T(int i) { return texelFetch(uTexels, i); }\n";
 constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
 constexpr std::string_view kTextureStretch = "float textureStretch = 1.0;\n";
 
@@ -353,9 +356,8 @@ protected:
             const OpClass opClass = program::opcodeInfo(c.op).opClass;
             texels_ = opClass == OpClass::ImageTexture || opClass == OpClass::FormulaImageTexture;
             std::string source = std::string(sdf::glslPrelude()) + std::string(sdf::glslLibrary()) +
-                                 std::string(gl::parameterAccessSource()) +
-                                 std::string(texels_ ? kTexels : kNoTexels) + std::string(kTextureStretch) +
-                                 std::string(sdf::glslTextureLookup()) +
+                                 std::string(gl::parameterAccessSource()) + std::string(texels_ ? kTexels : kNoTexels) +
+                                 std::string(kTextureStretch) + std::string(sdf::glslTextureLookup()) +
                                  gl::generateMapFunction(built.program) + std::string(kMain);
             glcontext::FragmentEvaluator evaluator(gl(), source);
             const bool pointOp = program::opcodeInfo(c.op).opClass == OpClass::Point;
@@ -418,9 +420,9 @@ private:
         int bad = 0;
         for (int i = 0; i < kPoints; ++i) {
             const float* q = &points[static_cast<size_t>(i) * 4];
-            cpu::f32::Sample s = cpu::f32::runCode(p.code, p.result, cpuParams.data(), scratch,
-                                                   cpu::f32::vec3(q[0], q[1], q[2]),
-                                                   cpu::f32::Texels{texels_ ? &images_ : nullptr});
+            cpu::f32::Sample s =
+                cpu::f32::runCode(p.code, p.result, cpuParams.data(), scratch, cpu::f32::vec3(q[0], q[1], q[2]),
+                                  cpu::f32::Texels{texels_ ? &images_ : nullptr});
             cpu::f32::vec4 expected =
                 view == 0 ? cpu::f32::vec4(s.d, s.step, s.material.bump, 0.0f) : cpu::f32::materialSlot(s.material, view - 1);
             for (int k = 0; k < 4; ++k) {

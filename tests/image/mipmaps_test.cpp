@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "image/mipmapped_images.h"
 #include "image/image_io.h"
+#include "image/mipmapped_images.h"
 #include "image/mipmaps.h"
 #include "sdf/shared.h"
 

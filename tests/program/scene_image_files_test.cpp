@@ -90,8 +90,8 @@ TEST(TextureFiles, AreTheImageTexturesResolvedAgainstTheScenesFolder) {
 TEST(TextureFiles, AMissingOrUnreadableFileIsAProblemNamedByItsKey) {
     std::vector<std::string> problems = textureProblems(texturedIn("/nonexistent-folder"));
     ASSERT_EQ(problems.size(), 3u);
-    EXPECT_EQ(problems[0].rfind("materials[0].texture_image: cannot read image /nonexistent-folder/textures/wood.png", 0),
-              0u)
+    EXPECT_EQ(
+        problems[0].rfind("materials[0].texture_image: cannot read image /nonexistent-folder/textures/wood.png", 0), 0u)
         << problems[0];
     EXPECT_EQ(problems[1], "materials[2].texture_image: an image texture needs an image file here");
 }

@@ -84,8 +84,8 @@ struct AnalyticDriver {
     void setTextureStretch(real) {}
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 
-#include "sdf/glsl/mipmap_lookup.glsl"
 #include "sdf/glsl/environment_lookup.glsl"
+#include "sdf/glsl/mipmap_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
 };
 
