@@ -141,6 +141,11 @@ void main() {
 
 std::string_view parameterAccessSource() { return kParameters; }
 
+std::string textureAccessSource(bool texels) {
+    return std::string(texels ? kTexels : kNoTexels) + std::string(kTextureStretch) +
+           std::string(sdf::glslTextureLookup());
+}
+
 // The fold loop's inputs: the prune grid's nodes, each leaf's (first, count)
 // into the list of kept blocks, and that list (gl_renderer.cpp binds them).
 constexpr std::string_view kFoldInputs = R"(
@@ -216,8 +221,7 @@ std::string generateFragmentShader(const program::Program& program) {
         << sdf::glslPrelude() << sdf::glslLibrary() << kInterface
         << kParameters
         // scenes without images read no texels
-        << (texels ? kTexels : kNoTexels) << kTextureStretch << sdf::glslTextureLookup()
-        << generateMapFunction(program)
+        << textureAccessSource(texels) << generateMapFunction(program)
         // a constant: scenes without mirrors or glass compile no ray tree
         << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n"
         << "bool environmentMap() { return " << (environmentMap ? "true" : "false") << "; }\n"

@@ -18,6 +18,11 @@ std::string_view vertexShaderSource();
 // M(slot) (a material's four slots), which map() reads; after the shared library.
 std::string_view parameterAccessSource();
 
+// The scene images' texel accessor T(i) (the uTexels buffer, or zero when
+// `texels` is false), the image textures' footprint factor and the shared
+// texture lookup, which map() calls; after parameterAccessSource().
+std::string textureAccessSource(bool texels);
+
 // The program's formulas and its map(vec3 p): straight-line code over its
 // instructions, after the shared library and parameterAccessSource().
 std::string generateMapFunction(const program::Program& program);

@@ -338,11 +338,6 @@ program::ResolvedImages conformanceTexels() {
     return out;
 }
 
-// The texel accessor: the buffer for the cases that read it, else nothing.
-constexpr std::string_view kTexels =
-    "uniform samplerBuffer uTexels;\nvec4 T(int i) { return texelFetch(uTexels, i); }\n";
-constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
-constexpr std::string_view kTextureStretch = "float textureStretch = 1.0;\n";
 
 class OpcodeConformance : public test::GlTest {
 protected:
@@ -356,8 +351,7 @@ protected:
             const OpClass opClass = program::opcodeInfo(c.op).opClass;
             texels_ = opClass == OpClass::ImageTexture || opClass == OpClass::FormulaImageTexture;
             std::string source = std::string(sdf::glslPrelude()) + std::string(sdf::glslLibrary()) +
-                                 std::string(gl::parameterAccessSource()) + std::string(texels_ ? kTexels : kNoTexels) +
-                                 std::string(kTextureStretch) + std::string(sdf::glslTextureLookup()) +
+                                 std::string(gl::parameterAccessSource()) + gl::textureAccessSource(texels_) +
                                  gl::generateMapFunction(built.program) + std::string(kMain);
             glcontext::FragmentEvaluator evaluator(gl(), source);
             const bool pointOp = program::opcodeInfo(c.op).opClass == OpClass::Point;

@@ -13,10 +13,9 @@ SHARED_FN vec3 environmentRadiance(vec3 d, real angle) {
     real texels = angle * environmentTexelsPerRadian(e.kind, e.side);
     real lod = mipLevelOfFootprint(texels);
     int start = m.face * mipPyramidTexels(e.side);
-    // clamp: a face's edge may round a hair outside [0, 1], and a NaN (which
-    // GLSL's int() leaves undefined) becomes 0 by the library's clamp
-    real u = clamp(m.u, real(0), real(1));
-    real v = clamp(m.v, real(0), real(1));
+    // a face's edge may round a hair outside [0, 1]
+    real u = mapCoordinate(m.u, false);
+    real v = mapCoordinate(m.v, false);
     vec3 c = sampleMipmap(start, e.side, e.levels, u, v, lod, e.kind == ENVIRONMENT_EQUIRECT, false);
     return c * e.intensity;
 }

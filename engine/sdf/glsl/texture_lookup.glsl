@@ -20,10 +20,8 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
         return sampleMipmap(start, side, levels, real(0.5), real(0.5), real(levels - 1), false, false);
     }
     TexturePoint t = texturePoint(mapping, p, q1, q2);
-    // a wrapped coordinate reduced to [0, 1) first keeps its texel accurate
-    // far along a tiled plane; clamping turns a NaN into 0 (as environments do)
-    real u = clamp(t.wrapU ? fractr(t.u) : t.u, real(0), real(1));
-    real v = clamp(t.wrapV ? fractr(t.v) : t.v, real(0), real(1));
+    real u = mapCoordinate(t.u, t.wrapU);
+    real v = mapCoordinate(t.v, t.wrapV);
     real lod = mipLevelOfFootprint(q0.y * distance * textureStretch * real(side));
     return sampleMipmap(start, side, levels, u, v, lod, t.wrapU, t.wrapV);
 }
@@ -57,9 +55,12 @@ SHARED_FN vec3 triplanarColor(vec3 p, vec3 gradient, real distance, vec4 q0, vec
     w = total > real(0) ? w / total : vec3(real(1) / real(3));
     vec3 t = p * q0.x;
     real lod = mipLevelOfFootprint(q0.y * distance * textureStretch * real(side));
-    vec3 alongX = sampleMipmap(start, side, levels, fractr(t.z), fractr(t.y), lod, true, true);
-    vec3 alongY = sampleMipmap(start, side, levels, fractr(t.x), fractr(t.z), lod, true, true);
-    vec3 alongZ = sampleMipmap(start, side, levels, fractr(t.x), fractr(t.y), lod, true, true);
+    real x = mapCoordinate(t.x, true);
+    real y = mapCoordinate(t.y, true);
+    real z = mapCoordinate(t.z, true);
+    vec3 alongX = sampleMipmap(start, side, levels, z, y, lod, true, true);
+    vec3 alongY = sampleMipmap(start, side, levels, x, z, lod, true, true);
+    vec3 alongZ = sampleMipmap(start, side, levels, x, y, lod, true, true);
     return alongX * w.x + alongY * w.y + alongZ * w.z;
 }
 

@@ -20,6 +20,11 @@ struct TexturePoint {
     bool wrapV;
 };
 
+// A coordinate as the sampler takes it: one that wraps reduced to [0, 1)
+// first (so a far tile keeps its texel accurate), then clamped to [0, 1],
+// which also turns a NaN into 0 (GLSL leaves int() of a NaN undefined).
+SHARED_FN real mapCoordinate(real x, bool wrap) { return clamp(wrap ? fractr(x) : x, real(0), real(1)); }
+
 // The turn about `axisUp` (the primitive's axis, +y unless a capsule's) seen
 // from outside: 1/2 faces +z (the front a default camera sees), 0 and 1 meet
 // at the back, u grows towards +x.
@@ -32,10 +37,12 @@ SHARED_FN vec3 planeTangent(vec3 n) {
     return normalize3(abs(n.y) < real(0.9) ? cross3(up, n) : cross3(n, vec3(real(0), real(0), real(1))));
 }
 
+// The environment's latitude-longitude map (environment.glsl) mirrored in z,
+// so the image's centre faces +z instead of -z.
 SHARED_FN TexturePoint sphericalPoint(vec3 p, vec3 radii) {
     vec3 d = p / radii;
-    real horizontal = sqrt(d.x * d.x + d.z * d.z);
-    return TexturePoint(aroundAxis(d.x, d.z), real(0.5) + libraryAtan2(d.y, horizontal) / PI, true, false);
+    MapPoint m = equirectPoint(vec3(d.x, d.y, -d.z));
+    return TexturePoint(m.u, m.v, true, false);
 }
 
 // The face whose slab the point is furthest out of (ties to x, then y), seen
