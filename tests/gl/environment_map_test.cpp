@@ -14,6 +14,7 @@
 #include "parity/parity.h"
 #include "program/compile_scene.h"
 #include "program/scene_images.h"
+#include "support/scratch_folder.h"
 
 namespace sdfwb {
 namespace {
@@ -23,14 +24,10 @@ const glm::vec3 kFaceColours[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1
 
 class EnvironmentMap : public test::GlTest {
 protected:
-    // one folder per test: CTest runs the tests of this file in parallel processes
-    std::filesystem::path folder = std::filesystem::path(testing::TempDir()) /
-                                   (std::string("sdfwb_environment_map_") +
-                                    testing::UnitTest::GetInstance()->current_test_info()->name());
+    test::ScratchFolder folder{"sdfwb_environment_map_"};
 
     void SetUp() override {
         test::GlTest::SetUp();
-        std::filesystem::create_directories(folder);
         for (int face = 0; face < 6; ++face) {
             image::Image solid(8, 8);
             for (size_t i = 0; i < solid.pixelCount(); ++i) {
@@ -39,16 +36,12 @@ protected:
             image::writeImage(folder / ("face" + std::to_string(face) + ".png"), solid);
         }
     }
-    void TearDown() override {
-        std::filesystem::remove_all(folder);
-        test::GlTest::TearDown();
-    }
 
     // A perfect mirror ball of radius 1 at the origin, the eye on +z looking
     // at it, no lights or ambient light: every colour comes from the map.
     scene::Scene mirrorBallInABox() const {
         scene::Scene s;
-        s.directory.path = folder.string();
+        s.directory.path = folder.path().string();
         s.camera = {.target = {0, 0, 0}, .azimuth = 0, .elevation = 0, .distance = 4, .fov = 50};
         s.lights.clear();
         s.environment.ambient = glm::dvec3(0);

@@ -15,6 +15,7 @@
 #include "parity/parity.h"
 #include "program/compile_scene.h"
 #include "program/scene_images.h"
+#include "support/scratch_folder.h"
 
 namespace sdfwb {
 namespace {
@@ -34,14 +35,10 @@ void expectColour(glm::vec3 got, glm::vec3 want, const char* where) {
 
 class ImageTexture : public test::GlTest {
 protected:
-    // one folder per test: CTest runs the tests of this file in parallel processes
-    std::filesystem::path folder =
-        std::filesystem::path(testing::TempDir()) /
-        (std::string("sdfwb_image_texture_") + testing::UnitTest::GetInstance()->current_test_info()->name());
+    test::ScratchFolder folder{"sdfwb_image_texture_"};
 
     void SetUp() override {
         test::GlTest::SetUp();
-        std::filesystem::create_directories(folder);
         image::Image quadrants(16, 16);  // rows from the top
         for (int y = 0; y < 16; ++y) {
             for (int x = 0; x < 16; ++x) {
@@ -52,17 +49,13 @@ protected:
         }
         image::writeImage(folder / "quadrants.png", quadrants);
     }
-    void TearDown() override {
-        std::filesystem::remove_all(folder);
-        test::GlTest::TearDown();
-    }
 
     // One primitive seen along -z, lit by a white light from the eye, with
     // a white diffuse colour and nothing else: a face towards the eye shows
     // its texture's colour (n . l = 1).
     scene::Scene flatLit(scene::Node shape) const {
         scene::Scene s;
-        s.directory.path = folder.string();
+        s.directory.path = folder.path().string();
         s.camera = {.target = {0, 0, 0}, .azimuth = 0, .elevation = 0, .distance = 5, .fov = 40};
         s.lights = {scene::Light{.direction = {0, 0, 1}, .color = glm::dvec3(1), .softness = 8}};
         s.render.shadows = scene::ShadowMode::None;

@@ -13,6 +13,7 @@
 #include "image/mipmapped_images.h"
 #include "image/mipmaps.h"
 #include "sdf/shared.h"
+#include "support/scratch_folder.h"
 
 namespace sdfwb::image {
 namespace {
@@ -49,12 +50,7 @@ TEST(Mipmaps, EachLevelIsTheMeanOfFourTexelsOfTheLevelBefore) {
 
 class MipmappedImagesTest : public testing::Test {
 protected:
-    // one folder per test: CTest runs the tests of this file in parallel processes
-    std::filesystem::path folder = std::filesystem::path(testing::TempDir()) /
-                                   (std::string("sdfwb_environment_images_") +
-                                    testing::UnitTest::GetInstance()->current_test_info()->name());
-    void SetUp() override { std::filesystem::create_directories(folder); }
-    void TearDown() override { std::filesystem::remove_all(folder); }
+    sdfwb::test::ScratchFolder folder{"sdfwb_mipmapped_images_"};
 
     // A width x height image, red on its top row, blue on its bottom row, black between.
     std::filesystem::path redOverBlue(const std::string& name, int width, int height) {

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "support/scene_files.h"
+#include "support/scratch_folder.h"
 #include "scene/scene_json.h"
 
 namespace sdfwb::scene {
@@ -36,10 +37,9 @@ TEST(SceneJson, SaveAndLoadFileIsEqual) {
     Node sphere = Node::make(NodeKind::Sphere);
     sphere.set("material", std::string("gold"));
     scene.root.children.push_back(sphere);
-    auto path = std::filesystem::temp_directory_path() / "sdfwb_scene_json_test.json";
-    saveSceneFile(scene, path);
-    EXPECT_EQ(loadSceneFile(path), scene);
-    std::filesystem::remove(path);
+    sdfwb::test::ScratchFolder folder;
+    saveSceneFile(scene, folder / "saved.json");
+    EXPECT_EQ(loadSceneFile(folder / "saved.json"), scene);
 }
 
 TEST(SceneJson, NodesRoundTripThroughJson) {
