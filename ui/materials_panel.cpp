@@ -5,6 +5,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui/image_file_field.h"
 #include "ui/material_edits.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
@@ -44,7 +45,8 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
                 } else if (m.texture == scene::TexturePattern::Image) {
                     std::string& name = m.*std::get<std::string scene::Material::*>(row.member);
                     std::string key = path + "." + std::string(row.key);
-                    if (imageFileField(std::string(row.label).c_str(), key, name)) set("Edit material", {true, true});
+                    if (imageFileField(ui, editor.scene(), std::string(row.label).c_str(), key, name))
+                        set("Edit material", {true, true});
                     drawImageProblems(editor, ui, key);
                 }
             }

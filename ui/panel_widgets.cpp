@@ -184,25 +184,6 @@ void reportProblems(UiState& ui, const Problems& problems) {
     }
 }
 
-bool imageFileField(const char* label, const std::string& key, std::string& name) {
-    ImGui::InputTextWithHint(label, "image file, relative to the scene", &name);
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip(
-            "JSON key %s\nPNG, JPEG, TIFF or EXR; relative to the scene file's folder\n"
-            "Enter or leaving the field applies it",
-            key.c_str());
-    }
-    return ImGui::IsItemDeactivatedAfterEdit();
-}
-
-void drawImageProblems(const Editor& editor, UiState& ui, const std::string& keyPrefix) {
-    ui.imageCheck->request(editor.scene());
-    if (ui.imageCheck->pending()) ImGui::TextDisabled("reading images...");
-    for (const std::string& problem : ui.imageCheck->problems()) {
-        if (problem.starts_with(keyPrefix)) problemText(problem);
-    }
-}
-
 void problemText(const std::string& problem) {
     if (problem.empty()) return;
     ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 100, 255));

@@ -28,16 +28,6 @@ WidgetEdit dragVec3(const char* label, glm::dvec3& value, double speed, double m
                     const char* format = "%.3f");
 WidgetEdit colorEdit(const char* label, glm::dvec3& value);
 
-// An image file name typed relative to the scene's folder (`key` its JSON
-// path, shown in the tooltip); true when an edit was finished (Enter or
-// leaving the field), which is when the caller applies it.
-bool imageFileField(const char* label, const std::string& key, std::string& name);
-
-// The scene's image files under `keyPrefix` that cannot be read, in red
-// (their map or texture shows a magenta checkerboard meanwhile), as the last
-// finished check (ui/scene_image_check.h) found.
-void drawImageProblems(const Editor& editor, UiState& ui, const std::string& keyPrefix);
-
 // A refused value or formula, wrapped, in the error colour under the widget
 // it belongs to (nothing when `problem` is empty).
 void problemText(const std::string& problem);

@@ -21,14 +21,27 @@ void SceneImageCheck::request(const scene::Scene& scene) {
     checked->directory = scene.directory;
     job_ = queue_.submit([checked, shared = shared_](jobs::Job&) {
         std::vector<std::string> problems = program::sceneImageProblems(*checked);
+        std::map<std::string, image::Image> previews = program::sceneImagePreviews(*checked, kPreviewSide);
         std::lock_guard lock(shared->mutex);
         shared->problems = std::move(problems);
+        shared->previews = std::move(previews);
+        ++shared->generation;
     });
 }
 
 std::vector<std::string> SceneImageCheck::problems() const {
     std::lock_guard lock(shared_->mutex);
     return shared_->problems;
+}
+
+std::map<std::string, image::Image> SceneImageCheck::previews() const {
+    std::lock_guard lock(shared_->mutex);
+    return shared_->previews;
+}
+
+std::uint64_t SceneImageCheck::previewGeneration() const {
+    std::lock_guard lock(shared_->mutex);
+    return shared_->generation;
 }
 
 }  // namespace sdfwb::ui

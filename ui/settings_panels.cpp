@@ -9,6 +9,7 @@
 
 #include "program/scene_images.h"
 
+#include "ui/image_file_field.h"
 #include "ui/panel_widgets.h"
 #include "ui/panels.h"
 #include "ui/setting_widgets.h"
@@ -50,7 +51,7 @@ void drawEnvironmentPanel(Editor& editor, UiState& ui) {
         bool used = std::any_of(files.begin(), files.end(), [&](const auto& f) { return f.key == path; });
         if (!used) continue;
         std::string& name = e.*std::get<std::string scene::Environment::*>(row.member);
-        if (imageFileField(std::string(row.label).c_str(), path, name)) set({true, true}, path);
+        if (imageFileField(ui, editor.scene(), std::string(row.label).c_str(), path, name)) set({true, true}, path);
     }
     drawImageProblems(editor, ui, "environment.");
     ImGui::Separator();

@@ -4,6 +4,7 @@
 // the scene itself changes only through the Editor.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "scene/node_kinds.h"
+#include "ui/file_browser.h"
 #include "ui/scene_image_check.h"
 
 namespace sdfwb::ui {
@@ -56,6 +58,15 @@ struct UiState {
     std::vector<std::string> inspectorProblems;
     // The environment tab's image files, checked on a worker when they change.
     std::shared_ptr<SceneImageCheck> imageCheck = std::make_shared<SceneImageCheck>();
+    // The thumbnail texture of the image file named at a JSON path, or null;
+    // the window sets it (ImageThumbnails), tests may leave it empty.
+    std::function<void*(const std::string& key)> imageThumbnail;
+    // Lists a folder for the image picker (app/user_files/folder_listing.h);
+    // the window sets it, tests may leave it empty (nothing listed).
+    FolderLister listFolder;
+    // The image picker: the JSON path of the field it chooses a file for ("" when closed).
+    std::string imagePickerKey;
+    FileBrowser imagePicker{{".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr"}};
 
     // Formulas being typed in the Add menu, by node kind name.
     std::map<std::string, std::string> addFormulaDrafts;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/gui/glfw_context.h"
+#include "app/gui/image_thumbnails.h"
 #include "app/gui/mesh_export.h"
 #include "app/gui/snapshot_export.h"
 #include "app/gui/thumbnails.h"
@@ -22,6 +23,7 @@
 #include "tradeoff/measurements.h"
 #include "ui/polynomial_panel.h"
 #include "ui/editor.h"
+#include "ui/file_browser.h"
 #include "ui/script.h"
 #include "ui/transform_handles.h"
 #include "ui/ui_state.h"
@@ -39,8 +41,7 @@ struct PendingAction {
 
 struct FileDialogState {
     enum class Purpose { None, Open, SaveAs } purpose = Purpose::None;
-    std::string directory;
-    std::string path;  // the text field
+    ui::FileBrowser browser{{".json"}};
 };
 
 struct FileState {
@@ -76,6 +77,7 @@ struct AppState {
     tradeoff::MeasurementLookup measurements{tradeoff::defaultCacheDirectory()};  // Render tab's error estimate
     std::unique_ptr<Viewport> viewport;
     std::unique_ptr<Thumbnails> thumbnails;
+    std::unique_ptr<ImageThumbnails> imageThumbnails;  // beside the image file fields
     SnapshotExport snapshot;
     MeshExport meshExport;  // File > Export mesh
     FileState files;

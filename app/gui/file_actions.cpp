@@ -5,6 +5,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "app/user_files/folder_listing.h"
 #include "app/user_files/user_paths.h"
 #include "io/atomic_file.h"
 #include "program/scene_images.h"
@@ -59,14 +60,9 @@ void perform(AppState& app, const PendingAction& action) {
         app.editor.reset(scene::Scene{});
         app.files.current.clear();
         break;
-    case PendingAction::Kind::Open:
-        openScene(app, action.path);
-        break;
-    case PendingAction::Kind::Quit:
-        app.quit = true;
-        break;
-    case PendingAction::Kind::None:
-        break;
+    case PendingAction::Kind::Open: openScene(app, action.path); break;
+    case PendingAction::Kind::Quit: app.quit = true; break;
+    case PendingAction::Kind::None: break;
     }
 }
 
@@ -85,8 +81,9 @@ void openDialog(AppState& app, FileDialogState::Purpose purpose) {
     FileDialogState& dialog = app.files.dialog;
     dialog.purpose = purpose;
     fs::path start = app.files.current.empty() ? fs::current_path() : fs::absolute(app.files.current).parent_path();
-    dialog.directory = start.string();
-    dialog.path = app.files.current.empty() ? (start / "scene.json").string() : fs::absolute(app.files.current).string();
+    dialog.browser.open(
+        listFolder, start,
+        app.files.current.empty() ? (start / "scene.json").string() : fs::absolute(app.files.current).string());
 }
 
 void saveOrAsk(AppState& app) {
@@ -105,39 +102,15 @@ void drawFileBrowser(AppState& app) {
     if (dialog.purpose != FileDialogState::Purpose::None && !ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
     ImGui::SetNextWindowSize(ImVec2(620, 420), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal(title)) return;
-    ImGui::TextDisabled("%s", dialog.directory.c_str());
-    ImGui::BeginChild("entries", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 2.2f), true);
-    std::error_code error;
-    fs::path directory(dialog.directory);
-    if (ImGui::Selectable("..")) dialog.directory = directory.parent_path().string();
-    std::vector<fs::directory_entry> entries;
-    for (const auto& entry : fs::directory_iterator(directory, error)) {
-        if (entry.is_directory() || entry.path().extension() == ".json") entries.push_back(entry);
-    }
-    std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
-        return std::pair(!a.is_directory(), a.path().filename()) < std::pair(!b.is_directory(), b.path().filename());
-    });
-    for (const auto& entry : entries) {
-        std::string name = entry.path().filename().string() + (entry.is_directory() ? "/" : "");
-        if (ImGui::Selectable(name.c_str(), dialog.path == entry.path().string())) {
-            if (entry.is_directory()) {
-                dialog.directory = entry.path().string();
-            } else {
-                dialog.path = entry.path().string();
-            }
-        }
-    }
-    ImGui::EndChild();
-    ImGui::SetNextItemWidth(-1);
-    bool enter = ImGui::InputText("##path", &dialog.path, ImGuiInputTextFlags_EnterReturnsTrue);
+    bool enter = dialog.browser.draw(ImGui::GetFrameHeightWithSpacing());
     bool accept = ImGui::Button(dialog.purpose == FileDialogState::Purpose::Open ? "Open" : "Save") || enter;
     ImGui::SameLine();
     bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
     if (accept) {
         if (dialog.purpose == FileDialogState::Purpose::Open) {
-            request(app, {PendingAction::Kind::Open, dialog.path});
+            request(app, {PendingAction::Kind::Open, dialog.browser.path});
         } else {
-            saveScene(app, dialog.path);
+            saveScene(app, dialog.browser.path);
         }
     }
     if (accept || cancel) {
@@ -177,11 +150,13 @@ void drawUnsavedPrompt(AppState& app) {
 }
 
 void drawRestorePrompt(AppState& app) {
-    if (app.files.offerRestore && !ImGui::IsPopupOpen("Restore unsaved work?")) ImGui::OpenPopup("Restore unsaved work?");
+    if (app.files.offerRestore && !ImGui::IsPopupOpen("Restore unsaved work?"))
+        ImGui::OpenPopup("Restore unsaved work?");
     // centred and no larger than the window, whatever its size now
     const ImGuiViewport* screen = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(screen->WorkPos.x + screen->WorkSize.x * 0.5f, screen->WorkPos.y + screen->WorkSize.y * 0.5f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(
+        ImVec2(screen->WorkPos.x + screen->WorkSize.x * 0.5f, screen->WorkPos.y + screen->WorkSize.y * 0.5f),
+        ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(screen->WorkSize.x - 16, screen->WorkSize.y - 16));
     if (!ImGui::BeginPopupModal("Restore unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::PushTextWrapPos(std::min(screen->WorkSize.x - 48, 560.0f));

@@ -14,19 +14,20 @@
 #define GLFW_INCLUDE_NONE  // GL/gl.h would hide glcorearb.h's GL 1.x typedefs
 #include <GLFW/glfw3.h>
 
+#include "app/command_errors.h"
 #include "app/gui/app_state.h"
 #include "app/gui/file_actions.h"
 #include "app/gui/gl_debug_log.h"
 #include "app/gui/key_gate.h"
 #include "app/gui/main_window.h"
 #include "app/gui/window_capture.h"
-#include "app/command_errors.h"
 #include "app/output_paths.h"
 #include "app/scene_source.h"
+#include "app/user_files/folder_listing.h"
+#include "app/user_files/recent_files.h"
 #include "image/image_io.h"
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
-#include "app/user_files/recent_files.h"
 
 namespace sdfwb::app::gui {
 
@@ -36,8 +37,8 @@ class Host final : public ui::ScriptHost {
 public:
     explicit Host(AppState& app) : app_(app) {}
     bool idle() const override {
-        return app_.viewport->idle() && (!app_.ui.showThumbnails || app_.thumbnails->idle()) && !app_.snapshot.running() &&
-               !app_.meshExport.running();
+        return app_.viewport->idle() && (!app_.ui.showThumbnails || app_.thumbnails->idle()) &&
+               !app_.ui.imageCheck->pending() && !app_.snapshot.running() && !app_.meshExport.running();
     }
     std::string requestScreenshot(const std::filesystem::path& path) override {
         app_.screenshot = path;
@@ -109,8 +110,8 @@ void printNewMessages(AppState& app) {
 void runFrame(AppState& app, Host& host) {
     double start = glfwGetTime();
     // a running implicitization redraws its live progress every frame
-    bool busy = !host.idle() || app.script || app.snapshot.running() || app.polynomial.job.running() ||
-                keyGate.holding();
+    bool busy =
+        !host.idle() || app.script || app.snapshot.running() || app.polynomial.job.running() || keyGate.holding();
     keyGate.beginFrame(app.window);
     if (busy) {
         glfwPollEvents();
@@ -137,6 +138,7 @@ void runFrame(AppState& app, Host& host) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     handleShortcuts(app);
+    app.imageThumbnails->update(*app.ui.imageCheck);
     drawMainWindow(app);
     app.viewport->update(app.editor.scene(), app.editor.revision(), app.ui, app.view.width, app.view.height,
                          app.view.interacting, app.view.interacting ? 0.020 : 0.025);
@@ -200,8 +202,9 @@ int runGui(const GuiArguments& arguments) {
         } else if (!arguments.screenshot.empty()) {
             image::checkWritableFormat(arguments.screenshot);
             checkOutputs({{"the scene", arguments.scene}}, {{"--screenshot", arguments.screenshot}});
-            script.emplace(ui::parseScript(ui::screenshotScript(arguments.screenshot, arguments.frames), "--screenshot"),
-                           "--screenshot");
+            script.emplace(
+                ui::parseScript(ui::screenshotScript(arguments.screenshot, arguments.frames), "--screenshot"),
+                "--screenshot");
         }
     } catch (const scene::SceneError& error) {
         for (const std::string& problem : error.problems()) std::cerr << "sdf-workbench gui: " << problem << "\n";
@@ -261,6 +264,9 @@ int runGui(const GuiArguments& arguments) {
             app.context = GlfwContext::forWindow(window);
             app.viewport = std::make_unique<Viewport>(*app.context);
             app.thumbnails = std::make_unique<Thumbnails>(app.context->gl());
+            app.imageThumbnails = std::make_unique<ImageThumbnails>(app.context->gl());
+            app.ui.imageThumbnail = [&app](const std::string& key) { return app.imageThumbnails->lookup(key); };
+            app.ui.listFolder = listFolder;
         } catch (const std::exception& error) {
             std::cerr << "sdf-workbench gui: " << error.what() << "\n";
             return 1;
@@ -277,6 +283,8 @@ int runGui(const GuiArguments& arguments) {
         exitCode = app.exitCode;
         app.viewport.reset();
         app.thumbnails.reset();
+        app.ui.imageThumbnail = nullptr;
+        app.imageThumbnails.reset();
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();

@@ -13,6 +13,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "image/image.h"
+
 namespace sdfwb::image {
 
 struct MipmappedImages {
@@ -43,6 +45,10 @@ MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& fi
 // Thread-safe.
 std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
                                                              int maxSide);
+
+// Image `index` of `images` at its largest mip level of side at most
+// `maxSide` (at least 1 x 1), rows from the top: a thumbnail for the editor.
+Image mipmapPreview(const MipmappedImages& images, int index, int maxSide);
 
 // What a map or texture shows when its images cannot be read (the editor
 // still opens the scene): a magenta and black checkerboard, `count` images of

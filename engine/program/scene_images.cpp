@@ -10,7 +10,7 @@ namespace {
 
 namespace shared = sdf::f64;
 
-int maxSide(int kind) { return kind == shared::ENVIRONMENT_BOX ? image::kMaxBoxFaceSide : image::kMaxEnvironmentSide; }
+int environmentSide(int kind) { return kind == shared::ENVIRONMENT_BOX ? image::kMaxBoxFaceSide : image::kMaxEnvironmentSide; }
 
 std::vector<std::filesystem::path> paths(const std::vector<std::string>& files) { return {files.begin(), files.end()}; }
 
@@ -22,6 +22,15 @@ std::filesystem::path sceneFilePath(const scene::Scene& scene, const std::string
         path = std::filesystem::path(scene.directory.path) / path;
     }
     return path.lexically_normal();
+}
+
+std::string sceneFileName(const scene::Scene& scene, const std::filesystem::path& file) {
+    // "" is the working directory, which absolute() refuses to name
+    const std::filesystem::path folder =
+        scene.directory.path.empty() ? std::filesystem::current_path() : std::filesystem::absolute(scene.directory.path);
+    const std::filesystem::path absolute = std::filesystem::absolute(file).lexically_normal();
+    const std::filesystem::path relative = absolute.lexically_relative(folder.lexically_normal());
+    return (relative.empty() ? absolute : relative).generic_string();
 }
 
 std::vector<SceneImageFile> environmentFiles(const scene::Scene& scene) {
@@ -48,7 +57,7 @@ std::vector<SceneImageFile> environmentFiles(const scene::Scene& scene) {
 
 std::vector<std::string> environmentProblems(const scene::Scene& scene) {
     std::vector<std::string> problems;
-    const int side = maxSide(static_cast<int>(scene.environment.map));
+    const int side = environmentSide(static_cast<int>(scene.environment.map));
     std::vector<SceneImageFile> files = environmentFiles(scene);
     std::vector<std::filesystem::path> all;
     for (const SceneImageFile& file : files) all.push_back(file.path);
@@ -107,6 +116,25 @@ std::vector<std::string> sceneImageProblems(const scene::Scene& scene) {
     return problems;
 }
 
+std::map<std::string, image::Image> sceneImagePreviews(const scene::Scene& scene, int maxSide) {
+    std::map<std::string, image::Image> previews;
+    // a set of files that cannot be read has no previews: the problems name the files at fault
+    auto preview = [&](const std::vector<SceneImageFile>& files, int side) {
+        std::vector<std::filesystem::path> all;
+        for (const SceneImageFile& file : files) all.push_back(file.path);
+        try {
+            auto images = image::cachedMipmappedImages(all, side);
+            for (std::size_t i = 0; i < files.size(); ++i)
+                previews[files[i].key] = image::mipmapPreview(*images, static_cast<int>(i), maxSide);
+        } catch (const std::exception&) {
+        }
+    };
+    std::vector<SceneImageFile> environment = environmentFiles(scene);
+    if (!environment.empty()) preview(environment, environmentSide(static_cast<int>(scene.environment.map)));
+    for (const SceneImageFile& file : textureFiles(scene)) preview({file}, image::kMaxTextureSide);
+    return previews;
+}
+
 Program compileSceneReadingImages(const scene::Scene& scene, const CompileOptions& options) {
     Program program = compileScene(scene, options);
     resolveImages(program);
@@ -148,7 +176,7 @@ ResolvedImages resolveImages(const Program& program) {
     if (program.environmentKind != shared::ENVIRONMENT_COLOR) {
         try {
             out.environment =
-                image::cachedMipmappedImages(paths(program.environmentFiles), maxSide(program.environmentKind));
+                image::cachedMipmappedImages(paths(program.environmentFiles), environmentSide(program.environmentKind));
         } catch (const std::exception&) {
             out.environment = image::placeholderImages(static_cast<int>(program.environmentFiles.size()));
         }

@@ -7,6 +7,7 @@
 // program's images here, so they sample the same texels.
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -42,6 +43,10 @@ std::vector<std::string> environmentProblems(const scene::Scene& scene);
 std::vector<std::string> textureProblems(const scene::Scene& scene);
 std::vector<std::string> sceneImageProblems(const scene::Scene& scene);
 
+// A thumbnail (image::mipmapPreview, side at most `maxSide`) of each file
+// that can be read, by its key; read through the cache, as a render would.
+std::map<std::string, image::Image> sceneImagePreviews(const scene::Scene& scene, int maxSide);
+
 // compileScene, then the scene's images read into the cache on the calling
 // thread: for callers that compile on a worker and render where a file read
 // would stall (the window's UI thread, where the GL backend runs).
@@ -53,6 +58,9 @@ void moveSceneDirectory(scene::Scene& scene, const std::filesystem::path& direct
 
 // `name` as the scene names a file, resolved against its folder.
 std::filesystem::path sceneFilePath(const scene::Scene& scene, const std::string& name);
+// The other way: how the scene names `file` (an image picked in the editor),
+// relative to its folder, or absolute where no relative name reaches it.
+std::string sceneFileName(const scene::Scene& scene, const std::filesystem::path& file);
 
 struct ResolvedImages {
     // The texel buffer: the environment's images (if any), then each texture file's.

@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include "image/image_io.h"
 #include "program/compile_scene.h"
 #include "program/scene_images.h"
 #include "scene/scene_validation.h"
+#include "support/scratch_folder.h"
 
 namespace sdfwb::program {
 namespace {
@@ -57,8 +59,22 @@ TEST(EnvironmentFiles, MovingTheSceneKeepsItsRelativeNamesPointingAtTheSameFiles
     EXPECT_EQ(s.environment.boxNegativeZ, "");
     std::vector<SceneImageFile> after = environmentFiles(s);
     for (size_t i = 0; i < before.size(); ++i) {
-        if (!before[i].name.empty()) EXPECT_EQ(after[i].path, before[i].path) << before[i].key;  // "" names no file
+        if (!before[i].name.empty()) {  // "" names no file
+            EXPECT_EQ(after[i].path, before[i].path) << before[i].key;
+        }
     }
+}
+
+TEST(SceneFileNames, APickedFileIsNamedRelativeToTheScenesFolder) {
+    scene::Scene s;
+    s.directory.path = "/scenes/tutorial";
+    for (const char* file : {"/scenes/tutorial/textures/wood.png", "/scenes/shared/sky.exr", "/elsewhere/a.png"}) {
+        std::string name = sceneFileName(s, file);
+        EXPECT_FALSE(std::filesystem::path(name).is_absolute()) << name;
+        EXPECT_EQ(sceneFilePath(s, name), file) << name;
+    }
+    EXPECT_EQ(sceneFileName(s, "/scenes/tutorial/textures/../textures/wood.png"), "textures/wood.png");
+    EXPECT_EQ(sceneFileName(s, "/scenes/shared/sky.exr"), "../shared/sky.exr");
 }
 
 scene::Scene texturedIn(const std::string& folder) {
@@ -94,6 +110,34 @@ TEST(TextureFiles, AMissingOrUnreadableFileIsAProblemNamedByItsKey) {
         problems[0].rfind("materials[0].texture_image: cannot read image /nonexistent-folder/textures/wood.png", 0), 0u)
         << problems[0];
     EXPECT_EQ(problems[1], "materials[2].texture_image: an image texture needs an image file here");
+}
+
+// A 16 x 16 image, its top half red and its bottom half blue.
+void writeRedOverBlue(const std::filesystem::path& path) {
+    image::Image picture(16, 16);
+    for (std::size_t i = 0; i < picture.pixelCount(); ++i) picture.rgb[3 * i + (i < 128 ? 0 : 2)] = 1.0f;
+    image::writeImage(path, picture);
+}
+
+TEST(ImagePreviews, EachReadableFileHasAnUprightThumbnailOfAtMostTheSideAsked) {
+    sdfwb::test::ScratchFolder folder;
+    std::filesystem::create_directories(folder / "textures");
+    writeRedOverBlue(folder / "textures/wood.png");
+    scene::Scene s = texturedIn(folder.path().string());
+    s.environment.map = scene::EnvironmentMapKind::Equirect;
+    s.environment.image = "textures/wood.png";
+    std::map<std::string, image::Image> previews = sceneImagePreviews(s, 4);
+    // materials[2] names no file: no thumbnail; the others share one file
+    ASSERT_EQ(previews.size(), 3u);
+    for (const char* key : {"environment.image", "materials[0].texture_image", "materials[3].texture_image"}) {
+        ASSERT_TRUE(previews.count(key)) << key;
+        const image::Image& preview = previews.at(key);
+        ASSERT_EQ(preview.width, 4) << key;
+        ASSERT_EQ(preview.height, 4) << key;
+        EXPECT_FLOAT_EQ(preview.rgb[0], 1.0f) << key << ": the top row is red";
+        EXPECT_FLOAT_EQ(preview.rgb[preview.rgb.size() - 1], 1.0f) << key << ": the bottom row is blue";
+    }
+    EXPECT_EQ(sceneImagePreviews(s, 64).at("environment.image").width, 16);  // never larger than the image
 }
 
 TEST(TextureFiles, MovingTheSceneRebasesTheTexturesToo) {
