@@ -301,8 +301,8 @@ private:
         } else if (m.texture != scene::TexturePattern::None) {
             double perUnit = 1.0 / m.textureScale;
             double footprint = footprintPerDistance * perUnit / objectScale_;
-            int param =
-                addParams({dvec4(static_cast<double>(m.texture), perUnit, footprint, 0), dvec4(m.textureColor, 0)});
+            int param = addParams(
+                {dvec4(static_cast<double>(m.texture), perUnit, footprint, specular(m)), dvec4(m.textureColor, 0)});
             emit({Opcode::Texture, sample, sample, point, param, -1, 0});
         }
         if (m.bump != scene::BumpPattern::None) {
@@ -331,17 +331,21 @@ private:
                                ? shape.variant
                                : addFormula(node.text("formula"), FormulaLanguage::Sdf, true);
             double tiles = 1.0 / m.textureScale;
-            int param = addParams({dvec4(tiles, footprintPerDistance * tiles / objectScale_, 0, 0), dvec4(0.0)});
+            int param =
+                addParams({dvec4(tiles, footprintPerDistance * tiles / objectScale_, specular(m), 0), dvec4(0.0)});
             program_.textureSlots.push_back({param + 1, fileIndex});
             emit({Opcode::TriplanarTexture, sample, sample, point, param, -1, gradient});
             return;
         }
         TextureMapping map = textureMapping(node, m.textureScale);
         double footprint = footprintPerDistance * map.uvPerUnit / objectScale_;
-        int param = addParams({dvec4(map.mapping, footprint, 0, 0), map.s0, map.s1, dvec4(0.0)});
+        int param = addParams({dvec4(map.mapping, footprint, specular(m), 0), map.s0, map.s1, dvec4(0.0)});
         program_.textureSlots.push_back({param + 3, fileIndex});
         emit({Opcode::ImageTexture, sample, sample, point, param, -1, 0});
     }
+
+    // The textures' flag for the specular colour, as their instructions read it.
+    static double specular(const scene::Material& m) { return m.textureSpecular ? 1.0 : 0.0; }
 
     // x minus the nearest multiple of period (period > 0), exact in double for
     // the magnitudes of a scene.

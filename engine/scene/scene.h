@@ -86,6 +86,7 @@ struct Material {
     double textureScale = 0.25;  // cell, slab, noise feature or image tile size, object units
     glm::dvec3 textureColor{0.1};
     std::string textureImage;  // file, relative to the scene's folder
+    bool textureSpecular = false;  // the texture modulates the specular colour R_E too
     // Bump map (sdf/glsl/texture.glsl): a height field of the object-space
     // point that perturbs the shading normal; the surface stays as it is.
     BumpPattern bump = BumpPattern::None;

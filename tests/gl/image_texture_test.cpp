@@ -114,6 +114,24 @@ TEST_F(ImageTexture, AFormulaShowsItsImageTriplanarAlongItsNormal) {
     expectUprightImage(s);
 }
 
+TEST_F(ImageTexture, WithTextureSpecularTheImageColoursTheHighlightToo) {
+    // lit and seen head on, a near-zero shininess makes the highlight the
+    // specular colour itself: the image with texture_specular, white without
+    scene::Node box = scene::Node::make(scene::NodeKind::Box);
+    box.set("half_extents", glm::dvec3(1.2));
+    scene::Scene s = flatLit(box);
+    s.materials[0].diffuse = glm::dvec3(0);
+    s.materials[0].specular = glm::dvec3(1);
+    s.materials[0].shininess = 1e-4;
+    s.materials[0].textureSpecular = true;
+    expectUprightImage(s);
+    s.materials[0].textureSpecular = false;
+    parity::ParityResult plain = render(s);
+    EXPECT_TRUE(plain.passes);
+    expectColour(pixel(plain.cpuColor, 22, 22), glm::vec3(1), "top left, untextured highlight");
+    expectColour(pixel(plain.glColor, 42, 42), glm::vec3(1), "bottom right, untextured highlight");
+}
+
 TEST_F(ImageTexture, AMissingFileIsNamedAndRendersAsThePlaceholder) {
     scene::Node sphere = scene::Node::make(scene::NodeKind::Sphere);
     scene::Scene s = flatLit(sphere);

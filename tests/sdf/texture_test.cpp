@@ -50,9 +50,20 @@ TEST(SolidTexture, NoiseStaysInRangeAndFadesToItsMean) {
 TEST(SolidTexture, NoneLeavesTheMaterial) {
     Material base = noMaterial();
     base.diffuse = vec3(0.3, 0.6, 0.9);
-    Material m = texturedMaterial(base, TEXTURE_NONE, vec3(0.7, 0.1, 0.2), 0.0, vec3(1, 0, 0));
+    Material m = texturedMaterial(base, TEXTURE_NONE, vec3(0.7, 0.1, 0.2), 0.0, vec3(1, 0, 0), true);
     EXPECT_EQ(m.diffuse, base.diffuse);
     EXPECT_EQ(m.ambient, base.ambient);
+}
+
+TEST(SolidTexture, ThePatternMixesTheSpecularColourOnlyWhenAsked) {
+    Material base = noMaterial();
+    base.specular = vec3(0.2, 0.4, 0.6);
+    const vec3 colour(1, 0, 0);
+    // a checker cell's inside, far from its edges: full coverage
+    vec3 inside(1.5, 0.5, 0.5);
+    ASSERT_EQ(textureCoverage(TEXTURE_CHECKER, inside, 0.0), 1.0);
+    EXPECT_EQ(texturedMaterial(base, TEXTURE_CHECKER, inside, 0.0, colour, false).specular, base.specular);
+    EXPECT_EQ(texturedMaterial(base, TEXTURE_CHECKER, inside, 0.0, colour, true).specular, colour);
 }
 
 }  // namespace

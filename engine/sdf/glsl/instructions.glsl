@@ -121,11 +121,11 @@ SHARED_FN Sample instStepScale(Sample s, vec3 p, vec4 q0) { return withDistances
 // ---- Texture: S[dst] = f(S[a], P[b], P[0], slots) ----
 // A primitive's sample with its material textured at its object-space point
 // p; the eye is at march point 0, so |eye| is the sample's distance from it.
-// q0 = (pattern, 1 / scale, footprint per distance in texture units, 0),
-// q1 = (texture colour, 0).
+// q0 = (pattern, 1 / scale, footprint per distance in texture units,
+// 1 when it changes the specular colour too), q1 = (texture colour, 0).
 SHARED_FN Sample instTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1) {
     real w = q0.z * length3(eye);
-    return Sample(s.d, s.step, texturedMaterial(s.material, int(q0.x), p * q0.y, w, xyz(q1)));
+    return Sample(s.d, s.step, texturedMaterial(s.material, int(q0.x), p * q0.y, w, xyz(q1), q0.w > real(0)));
 }
 
 // ---- Bump: S[dst] = f(S[a], P[b], P[0], slots) ----

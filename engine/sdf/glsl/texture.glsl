@@ -4,7 +4,8 @@
 // shapes included). Like the ground's patterns (material.glsl) each is
 // filtered over the sample's footprint: an isotropic width w across the ray,
 // in texture units. The pattern's coverage mixes the material's ambient and
-// diffuse colour towards the texture colour.
+// diffuse colour towards the texture colour, and its specular colour too
+// when the material asks (texture_specular).
 const int TEXTURE_NONE = 0;
 const int TEXTURE_CHECKER = 1;  // cubes of side `scale`, alternating
 const int TEXTURE_STRIPES = 2;  // slabs of thickness `scale` stacked along object y
@@ -66,11 +67,14 @@ SHARED_FN real textureCoverage(int pattern, vec3 x, real w) {
     return real(0);
 }
 
-SHARED_FN Material texturedMaterial(Material base, int pattern, vec3 x, real w, vec3 textureColor) {
+SHARED_FN Material texturedMaterial(Material base, int pattern, vec3 x, real w, vec3 textureColor, bool specular) {
     real coverage = textureCoverage(pattern, x, w);
     Material m = base;
     m.ambient = lerp3s(base.ambient, textureColor, coverage);
     m.diffuse = lerp3s(base.diffuse, textureColor, coverage);
+    if (specular) {
+        m.specular = lerp3s(base.specular, textureColor, coverage);
+    }
     return m;
 }
 

@@ -1,5 +1,6 @@
 // Image textures (lecture notes on realism, 1.1): a primitive's sample with
-// its ambient and diffuse colour multiplied by its image at the point's
+// its ambient and diffuse colour (and its specular colour when the material
+// asks, texture_specular) multiplied by its image at the point's
 // (u, v) (texture_mapping.glsl), filtered by the notes' mipmaps over the
 // sample's footprint, widened by textureStretch (the backend's: the tracer
 // sets it for the evaluation whose material it shades, tracer.glsl's
@@ -7,7 +8,8 @@
 // (mipmap_lookup.glsl), so it follows T(i) like it; the generated map()
 // calls it as the ImageTexture opcode.
 //
-// q0 = (mapping, (u, v) units per scene unit of footprint at distance 1, 0, 0),
+// q0 = (mapping, (u, v) units per scene unit of footprint at distance 1,
+// 1 when the image changes the specular colour too, 0),
 // q1, q2 = the primitive's slots as its mapping reads them,
 // q3 = (first texel, side, levels, 0) of the image: filled in where the
 // images are read (program/scene_images.cpp), so another file is a parameter edit.
@@ -26,17 +28,24 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
     return sampleMipmap(start, side, levels, u, v, lod, t.wrapU, t.wrapV);
 }
 
+// The sample's colours multiplied by the image's colour c.
+SHARED_FN Sample imageTexturedSample(Sample s, vec3 c, bool specular) {
+    Material m = s.material;
+    m.ambient = m.ambient * c;
+    m.diffuse = m.diffuse * c;
+    if (specular) {
+        m.specular = m.specular * c;
+    }
+    return Sample(s.d, s.step, m);
+}
+
 // ---- ImageTexture: S[dst] = f(S[a], P[b], P[0], slots) ----
 // A textureStretch of 0: the evaluation's colour is not shaded, nothing to look up.
 SHARED_FN Sample instImageTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
     if (!(textureStretch > real(0))) {
         return s;
     }
-    vec3 c = imageTextureColor(p, length3(eye), q0, q1, q2, q3);
-    Material m = s.material;
-    m.ambient = m.ambient * c;
-    m.diffuse = m.diffuse * c;
-    return Sample(s.d, s.step, m);
+    return imageTexturedSample(s, imageTextureColor(p, length3(eye), q0, q1, q2, q3), q0.z > real(0));
 }
 
 // Triplanar mapping, for primitives without a parametrization (formulas):
@@ -65,15 +74,12 @@ SHARED_FN vec3 triplanarColor(vec3 p, vec3 gradient, real distance, vec4 q0, vec
 }
 
 // ---- TriplanarTexture: S[dst] = f(S[a], P[b], P[0], formula value and gradient at P[b], slots) ----
-// q0 = (tiles per object unit, tiles per scene unit of footprint at distance 1, 0, 0),
+// q0 = (tiles per object unit, tiles per scene unit of footprint at distance 1,
+// 1 when the image changes the specular colour too, 0),
 // q1 = (first texel, side, levels, 0) of the image, filled in like ImageTexture's q3.
 SHARED_FN Sample instTriplanarTexture(Sample s, vec3 p, vec3 eye, vec4 v, vec4 q0, vec4 q1) {
     if (!(textureStretch > real(0))) {
         return s;
     }
-    vec3 c = triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1);
-    Material m = s.material;
-    m.ambient = m.ambient * c;
-    m.diffuse = m.diffuse * c;
-    return Sample(s.d, s.step, m);
+    return imageTexturedSample(s, triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1), q0.z > real(0));
 }
