@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -60,8 +62,9 @@ TextureMapping textureMapping(const scene::Node& node, double tileSize) {
         double length = glm::length(b - a) + 2.0 * r;
         return {shared::MAP_CAPSULE, dvec4(a, r), dvec4(b, 0), std::max(1.0 / (kTurn * r), 1.0 / length)};
     }
-    default: return {shared::MAP_MEAN, dvec4(0.0), dvec4(0.0), 0.0};
+    default: break;  // formulas are mapped triplanar; the other kinds are no primitives
     }
+    throw std::logic_error("no texture mapping for a " + std::string(scene::kindSpec(node.kind).name) + " node");
 }
 
 }  // namespace sdfwb::program

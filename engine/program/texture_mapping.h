@@ -19,6 +19,8 @@ struct TextureMapping {
 };
 
 // `tileSize` is the material's texture scale, the side of a plane's tiles.
+// For the nine primitives with a parametrization (formulas are mapped
+// triplanar instead); throws std::logic_error for any other kind.
 TextureMapping textureMapping(const scene::Node& node, double tileSize);
 
 }  // namespace sdfwb::program

@@ -17,11 +17,7 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
     int start = int(q3.x);
     int side = int(q3.y);
     int levels = int(q3.z);
-    int mapping = int(q0.x);
-    if (mapping == MAP_MEAN) {
-        return sampleMipmap(start, side, levels, real(0.5), real(0.5), real(levels - 1), false, false);
-    }
-    TexturePoint t = texturePoint(mapping, p, q1, q2);
+    TexturePoint t = texturePoint(int(q0.x), p, q1, q2);
     real u = mapCoordinate(t.u, t.wrapU);
     real v = mapCoordinate(t.v, t.wrapV);
     real lod = mipLevelOfFootprint(q0.y * distance * textureStretch * real(side));

@@ -4,7 +4,6 @@
 // run from 0 to 1 across the image (left to right, bottom to top); a
 // coordinate that goes round the surface wraps, the others stop at the edge.
 // Each mapping reads the primitive's own parameter slots (instructions.glsl).
-const int MAP_MEAN = 0;       // no parametrization, no formula to project by: the image's mean colour
 const int MAP_SPHERICAL = 1;  // sphere, ellipsoid: longitude and latitude; s0 = radii
 const int MAP_BOX = 2;        // box, round box: each face shows the whole image; s0 = half extents
 const int MAP_PLANE = 3;      // plane: tiles of the texture's scale; s0 = (unit normal, tiles per unit)
