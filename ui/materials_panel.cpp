@@ -2,8 +2,12 @@
 // alpha, L_E); add, rename (references follow) and remove (users reassigned,
 // ui/material_edits.h).
 
+#include <algorithm>
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
+
+#include "program/scene_images.h"
 
 #include "ui/image_file_field.h"
 #include "ui/material_edits.h"
@@ -39,12 +43,14 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
                 }));
             }
             const std::string path = "materials[" + std::to_string(i) + "]";
+            // only the files the material's texture and bump map read
+            const std::vector<program::SceneImageFile> files = program::textureFiles(editor.scene());
             for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
+                std::string key = path + "." + std::string(row.key);
                 if (row.type != scene::SettingType::ImageFile) {
                     set("Edit material", settingWidget(row, m));  // the name has its own field above
-                } else if (m.texture == scene::TexturePattern::Image) {
+                } else if (std::any_of(files.begin(), files.end(), [&](const auto& f) { return f.key == key; })) {
                     std::string& name = m.*std::get<std::string scene::Material::*>(row.member);
-                    std::string key = path + "." + std::string(row.key);
                     if (imageFileField(ui, editor.scene(), std::string(row.label).c_str(), key, name))
                         set("Edit material", {true, true});
                     drawImageProblems(editor, ui, key);

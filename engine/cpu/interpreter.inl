@@ -203,6 +203,7 @@ struct SampleDriver : Texels {
     bool secondaryRays() const { return program.secondaryRays; }
     bool environmentMap() const { return images != nullptr && images->environment != nullptr; }
     bool imageTextures() const { return !program.textureFiles.empty(); }
+    int textureSamplesPerHit() const { return program.textureSamplesPerHit(); }
     void setTextureStretch(real k) { textureStretch = k; }
 
 #include "sdf/glsl/environment_lookup.glsl"

@@ -226,6 +226,7 @@ std::string generateFragmentShader(const program::Program& program) {
         << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n"
         << "bool environmentMap() { return " << (environmentMap ? "true" : "false") << "; }\n"
         << "bool imageTextures() { return " << (program.textureFiles.empty() ? "false" : "true") << "; }\n"
+        << "int textureSamplesPerHit() { return " << program.textureSamplesPerHit() << "; }\n"
         << sdf::glslEnvironmentLookup() << sdf::glslSampleDriver() << kMain;
     return out.str();
 }

@@ -46,6 +46,7 @@ static_assert(static_cast<int>(scene::TexturePattern::Image) == codes::TEXTURE_I
 static_assert(static_cast<int>(scene::BumpPattern::None) == codes::BUMP_NONE);
 static_assert(static_cast<int>(scene::BumpPattern::Noise) == codes::BUMP_NOISE);
 static_assert(static_cast<int>(scene::BumpPattern::Waves) == codes::BUMP_WAVES);
+static_assert(static_cast<int>(scene::BumpPattern::Image) == codes::BUMP_IMAGE);
 static_assert(static_cast<int>(scene::EnvironmentMapKind::Color) == codes::ENVIRONMENT_COLOR);
 static_assert(static_cast<int>(scene::EnvironmentMapKind::Equirect) == codes::ENVIRONMENT_EQUIRECT);
 static_assert(static_cast<int>(scene::EnvironmentMapKind::Sphere) == codes::ENVIRONMENT_SPHERE);
@@ -296,8 +297,10 @@ private:
     void texture(const Node& node, int sample, int point) {
         auto it = materialIndex_.find(node.text("material"));
         const scene::Material& m = it == materialIndex_.end() ? defaultMaterial_ : scene_.materials[it->second];
+        const Instruction shape = program_.code.back();  // the primitive just emitted
+        int gradient = -1;  // a formula's tape with its gradient, once, for its triplanar images
         if (m.texture == scene::TexturePattern::Image) {
-            imageTexture(node, m, sample, point);
+            imageTexture(node, shape, gradient, {m.textureImage, m.textureScale, specular(m), 0.0}, sample, point);
         } else if (m.texture != scene::TexturePattern::None) {
             double perUnit = 1.0 / m.textureScale;
             double footprint = footprintPerDistance * perUnit / objectScale_;
@@ -305,8 +308,12 @@ private:
                 {dvec4(static_cast<double>(m.texture), perUnit, footprint, specular(m)), dvec4(m.textureColor, 0)});
             emit({Opcode::Texture, sample, sample, point, param, -1, 0});
         }
-        if (m.bump != scene::BumpPattern::None) {
-            // the depth in object units, like the pattern: scale nodes scale the bumps too
+        // the depth in object units, like the pattern: scale nodes scale the bumps too
+        if (m.bump == scene::BumpPattern::Image) {
+            program_.imageBumps = true;
+            imageTexture(node, shape, gradient, {m.bumpImage, m.bumpScale, kImageBump, m.bumpDepth * objectScale_},
+                         sample, point);
+        } else if (m.bump != scene::BumpPattern::None) {
             double perUnit = 1.0 / m.bumpScale;
             double footprint = footprintPerDistance * perUnit / objectScale_;
             int param = addParams({dvec4(static_cast<double>(m.bump), perUnit, footprint, m.bumpDepth * objectScale_)});
@@ -314,32 +321,45 @@ private:
         }
     }
 
+    // An image on a primitive: a colour texture, or with a depth a bump map
+    // whose height is the image's grey value times the depth
+    // (sdf/glsl/texture_lookup.glsl).
+    struct ImageUse {
+        const std::string& file;  // as the material names it
+        double tileSize;          // the material's texture or bump scale
+        double role;              // specular(m) for a colour texture, kImageBump for a bump map
+        double bumpDepth;         // of a bump map
+    };
+    static constexpr double kImageBump = -1.0;
+
     // The image's place in the texel buffer (the last slot) is left for the
     // backends to fill when they read the file (program/scene_images.h).
     // A formula has no parametrization: it is mapped triplanar, by its
     // gradient (an implicit surface's own tape has it; a distance formula
     // gets a second tape with one).
-    void imageTexture(const Node& node, const scene::Material& m, int sample, int point) {
-        std::string file = sceneFilePath(scene_, m.textureImage).string();
+    void imageTexture(const Node& node, const Instruction& shape, int& gradient, const ImageUse& use, int sample,
+                      int point) {
+        std::string file = sceneFilePath(scene_, use.file).string();
         auto known = std::find(program_.textureFiles.begin(), program_.textureFiles.end(), file);
         if (known == program_.textureFiles.end()) known = program_.textureFiles.insert(known, file);
         const int fileIndex = static_cast<int>(known - program_.textureFiles.begin());
-        const Instruction& shape = program_.code.back();  // the primitive just emitted
         if (opcodeInfo(shape.op).opClass == OpClass::FormulaShape ||
             opcodeInfo(shape.op).opClass == OpClass::FormulaSample) {
-            int gradient = shape.op == Opcode::ImplicitFormula
+            if (gradient < 0) {
+                gradient = shape.op == Opcode::ImplicitFormula
                                ? shape.variant
                                : addFormula(node.text("formula"), FormulaLanguage::Sdf, true);
-            double tiles = 1.0 / m.textureScale;
-            int param =
-                addParams({dvec4(tiles, footprintPerDistance * tiles / objectScale_, specular(m), 0), dvec4(0.0)});
+            }
+            double tiles = 1.0 / use.tileSize;
+            int param = addParams(
+                {dvec4(tiles, footprintPerDistance * tiles / objectScale_, use.role, use.bumpDepth), dvec4(0.0)});
             program_.textureSlots.push_back({param + 1, fileIndex});
             emit({Opcode::TriplanarTexture, sample, sample, point, param, -1, gradient});
             return;
         }
-        TextureMapping map = textureMapping(node, m.textureScale);
+        TextureMapping map = textureMapping(node, use.tileSize);
         double footprint = footprintPerDistance * map.uvPerUnit / objectScale_;
-        int param = addParams({dvec4(map.mapping, footprint, specular(m), 0), map.s0, map.s1, dvec4(0.0)});
+        int param = addParams({dvec4(map.mapping, footprint, use.role, use.bumpDepth), map.s0, map.s1, dvec4(0.0)});
         program_.textureSlots.push_back({param + 3, fileIndex});
         emit({Opcode::ImageTexture, sample, sample, point, param, -1, 0});
     }
@@ -645,6 +665,11 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     return program;
 }
 
+int Program::textureSamplesPerHit() const {
+    if (textureFiles.empty()) return 0;
+    return imageBumps ? shared::TEXTURE_COLOR_SAMPLE + 1 : 1;
+}
+
 std::uint64_t Program::structureKey() const {
     std::uint64_t hash = 1469598103934665603ull;
     auto mix = [&](std::int64_t value) {
@@ -665,6 +690,7 @@ std::uint64_t Program::structureKey() const {
     mix(pointRegisters);
     mix(sampleRegisters);
     mix(secondaryRays);
+    mix(imageBumps);
     mix(environmentKind != shared::ENVIRONMENT_COLOR);
     mix(result);
     for (const FormulaCode& formula : formulas) {

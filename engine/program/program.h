@@ -116,6 +116,12 @@ struct Program {
     };
     std::vector<std::string> textureFiles;
     std::vector<TextureSlot> textureSlots;
+    // Some material's bump map is an image: the tracer's texture phase takes
+    // four samples of its own around each hit to differentiate it. Structural.
+    bool imageBumps = false;
+    // Evaluations of the texture phase per hit (sdf/glsl/tracer.glsl): 0
+    // without image textures, 1 for their colour, 5 with an image bump map.
+    int textureSamplesPerHit() const;
     int width = 0;
     int height = 0;
     int aa = 1;

@@ -87,9 +87,11 @@ std::vector<SceneImageFile> textureFiles(const scene::Scene& scene) {
     std::vector<SceneImageFile> files;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const scene::Material& m = scene.materials[i];
-        if (m.texture != scene::TexturePattern::Image) continue;
-        files.push_back({"materials[" + std::to_string(i) + "].texture_image", m.textureImage,
-                         sceneFilePath(scene, m.textureImage)});
+        const std::string path = "materials[" + std::to_string(i) + "].";
+        if (m.texture == scene::TexturePattern::Image)
+            files.push_back({path + "texture_image", m.textureImage, sceneFilePath(scene, m.textureImage)});
+        if (m.bump == scene::BumpPattern::Image)
+            files.push_back({path + "bump_image", m.bumpImage, sceneFilePath(scene, m.bumpImage)});
     }
     return files;
 }
@@ -98,7 +100,8 @@ std::vector<std::string> textureProblems(const scene::Scene& scene) {
     std::vector<std::string> problems;
     for (const SceneImageFile& file : textureFiles(scene)) {
         if (file.name.empty()) {
-            problems.push_back(file.key + ": an image texture needs an image file here");
+            problems.push_back(file.key + ": an image " + (file.key.ends_with("bump_image") ? "bump map" : "texture") +
+                               " needs an image file here");
             continue;
         }
         try {

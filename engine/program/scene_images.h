@@ -32,7 +32,8 @@ struct SceneImageFile {
 // box map's faces +x -x +y -y +z -z); none for the background colour.
 std::vector<SceneImageFile> environmentFiles(const scene::Scene& scene);
 
-// One file per material whose texture is an image, in material order.
+// One file per material whose texture is an image and one per material whose
+// bump map is, in material order (a material's texture before its bump map).
 std::vector<SceneImageFile> textureFiles(const scene::Scene& scene);
 
 // One line per file that cannot be used, "environment.<key>: cannot read

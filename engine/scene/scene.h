@@ -59,9 +59,9 @@ static_assert(std::size(kTexturePatternNames) == static_cast<size_t>(TexturePatt
 // Distinct image files a scene's textures may name: with the environment's,
 // their texels stay within 2^24, where a float still counts every texel.
 inline constexpr int kMaxTextureImages = 16;
-enum class BumpPattern { None, Noise, Waves };
-inline constexpr const char* kBumpPatternNames[] = {"none", "noise", "waves"};
-static_assert(std::size(kBumpPatternNames) == static_cast<size_t>(BumpPattern::Waves) + 1);
+enum class BumpPattern { None, Noise, Waves, Image };
+inline constexpr const char* kBumpPatternNames[] = {"none", "noise", "waves", "image"};
+static_assert(std::size(kBumpPatternNames) == static_cast<size_t>(BumpPattern::Image) + 1);
 
 struct Material {
     std::string name;
@@ -90,8 +90,9 @@ struct Material {
     // Bump map (sdf/glsl/texture.glsl): a height field of the object-space
     // point that perturbs the shading normal; the surface stays as it is.
     BumpPattern bump = BumpPattern::None;
-    double bumpScale = 0.25;              // noise feature size or wavelength, object units
+    double bumpScale = 0.25;              // noise feature size or wavelength, or image tile size, object units
     double bumpDepth = 0.01;              // height of the field's range, object units
+    std::string bumpImage;                // grey height map, relative to the scene's folder
 
     bool operator==(const Material&) const = default;
 };

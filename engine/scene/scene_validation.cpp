@@ -169,12 +169,16 @@ std::vector<std::string> validateScene(const Scene& scene, FormulaVerdicts* verd
         const std::string path = "materials[" + std::to_string(i) + "]";
         out.settings(materialSettings(), m, path);
         out.fail(path + ".name", materialNameProblem(m.name, names));
-        if (m.texture != TexturePattern::Image) continue;
-        images.insert(m.textureImage);
-        if (images.size() == static_cast<size_t>(kMaxTextureImages) + 1) {
-            out.fail(path + ".texture_image",
-                     "a scene may use at most " + std::to_string(kMaxTextureImages) + " texture images");
-        }
+        auto count = [&](bool used, const std::string& file, const char* key) {
+            if (!used) return;
+            images.insert(file);
+            if (images.size() == static_cast<size_t>(kMaxTextureImages) + 1) {
+                out.fail(path + "." + key, "a scene may use at most " + std::to_string(kMaxTextureImages) +
+                                               " texture and bump images");
+            }
+        };
+        count(m.texture == TexturePattern::Image, m.textureImage, "texture_image");
+        count(m.bump == BumpPattern::Image, m.bumpImage, "bump_image");
     }
     out.tree(scene.root, verdicts);
     for (std::string& problem : materialReferenceProblems(scene)) out.problems.push_back(std::move(problem));

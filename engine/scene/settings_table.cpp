@@ -108,6 +108,7 @@ const Setting<Material> kMaterial[] = {
     {"bump", "bump map", "", Choice, choiceMember<&Material::bump>(), Any, 0, 0, kBumpPatternNames},
     {"bump_scale", "bump scale", "", Real, &Material::bumpScale, Closed, 1e-4, 1e4, {}, {0.005, 1e-4, 1e4, "%.3f"}},
     {"bump_depth", "bump depth", "", Real, &Material::bumpDepth, Closed, 0, 1e3, {}, {0.001, 0, 1e3, "%.4f"}},
+    {"bump_image", "bump image", "", ImageFile, &Material::bumpImage},
 };
 
 }  // namespace

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the texture images the scenes use, made here from formulas: a
-(u, v) test grid, a small planet as a latitude-longitude image, and a tiling
-brick wall. Standard library only; PNGs written by the environments' script.
+(u, v) test grid, a small planet as a latitude-longitude image, a tiling
+brick wall and its height map. Standard library only; PNGs written by the
+environments' script.
 
     python3 scenes/textures/make_textures.py   # rewrites the PNGs beside it
 
@@ -88,7 +89,25 @@ def bricks(x, y, size=128):
     return (0.45 * tone, 0.14 * tone, 0.08 * tone)
 
 
+def bricks_height(x, y, size=128):
+    """The bricks' height map, laid out as bricks(): mortar at 0, brick faces
+    at 1 with rounded edges, a little unevenness on each face."""
+    u, v = x / size, y / size
+    course = int(v * 4)
+    shift = 0.25 if course % 2 else 0.0
+    bu = (u * 2 + shift) % 1.0
+    bv = (v * 4) % 1.0
+    # distance into the brick from its mortar lines, in bricks' half-heights
+    inside = min((bu - 0.04) / 0.08, (1 - bu) / 0.08, (bv - 0.08) / 0.16, (1 - bv) / 0.16)
+    if inside <= 0:
+        return (0.0, 0.0, 0.0)
+    edge = min(inside, 1.0)
+    h = edge * edge * (3 - 2 * edge) * (0.9 + 0.1 * value_noise(u * 16, v * 16, 16, 3))
+    return (h, h, h)
+
+
 if __name__ == "__main__":
     write_png("uv_grid.png", 256, 256, uv_grid)
     write_png("planet.png", 512, 256, planet)
     write_png("bricks.png", 128, 128, bricks)
+    write_png("bricks_height.png", 128, 128, bricks_height)

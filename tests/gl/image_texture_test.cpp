@@ -132,6 +132,63 @@ TEST_F(ImageTexture, WithTextureSpecularTheImageColoursTheHighlightToo) {
     expectColour(pixel(plain.glColor, 42, 42), glm::vec3(1), "bottom right, untextured highlight");
 }
 
+// A grey height map on the box's front face, 16 x 16 texels: grey(x) for
+// column x (rows alike).
+void writeHeightMap(const std::filesystem::path& path, float (*grey)(int)) {
+    image::Image heights(16, 16);
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            for (int c = 0; c < 3; ++c)
+                heights.rgb[3 * static_cast<size_t>(y * 16 + x) + static_cast<size_t>(c)] = grey(x);
+        }
+    }
+    image::writeImage(path, heights);
+}
+
+TEST_F(ImageTexture, AConstantHeightMapLeavesTheImageBitForBit) {
+    writeHeightMap(folder / "flat.png", [](int) { return 0.5f; });
+    scene::Node box = scene::Node::make(scene::NodeKind::Box);
+    box.set("half_extents", glm::dvec3(1.2));
+    scene::Scene plain = flatLit(box);
+    plain.lights[0].direction = {-0.6, 0.3, 1};  // not along the normal, so a tilt would show
+    scene::Scene bumped = plain;
+    bumped.materials[0].bump = scene::BumpPattern::Image;
+    bumped.materials[0].bumpImage = "flat.png";
+    bumped.materials[0].bumpDepth = 1.0;
+    EXPECT_EQ(program::compileScene(bumped).textureSamplesPerHit(), 5);
+    parity::ParityResult a = render(plain), b = render(bumped);
+    EXPECT_TRUE(b.passes);
+    EXPECT_EQ(a.cpuColor.rgb, b.cpuColor.rgb);
+    EXPECT_EQ(a.glColor.rgb, b.glColor.rgb);
+}
+
+TEST_F(ImageTexture, AHeightMapRisingToTheRightTiltsTheNormalToTheLeft) {
+    // n' = n minus the height's gradient: a face rising to the right faces
+    // left, so a light from the left brightens it and one from the right darkens it
+    writeHeightMap(folder / "ramp.png", [](int x) { return static_cast<float>(x) / 15.0f; });
+    scene::Node box = scene::Node::make(scene::NodeKind::Box);
+    box.set("half_extents", glm::dvec3(1.2));
+    for (double side : {-1.0, 1.0}) {
+        scene::Scene plain = flatLit(box);
+        plain.materials[0].texture = scene::TexturePattern::None;
+        plain.lights[0].direction = {0.6 * side, 0, 1};
+        scene::Scene bumped = plain;
+        bumped.materials[0].bump = scene::BumpPattern::Image;
+        bumped.materials[0].bumpImage = "ramp.png";
+        bumped.materials[0].bumpDepth = 1.2;  // a slope of 1/2 across the 2.4-wide face
+        parity::ParityResult a = render(plain), b = render(bumped);
+        EXPECT_TRUE(b.passes);
+        for (const auto& [flat, tilted] : {std::pair{&a.cpuColor, &b.cpuColor}, std::pair{&a.glColor, &b.glColor}}) {
+            float before = pixel(*flat, 32, 32).x, after = pixel(*tilted, 32, 32).x;
+            if (side < 0) {
+                EXPECT_GT(after, before + 0.05f) << "light from the left";
+            } else {
+                EXPECT_LT(after, before - 0.05f) << "light from the right";
+            }
+        }
+    }
+}
+
 TEST_F(ImageTexture, AMissingFileIsNamedAndRendersAsThePlaceholder) {
     scene::Node sphere = scene::Node::make(scene::NodeKind::Sphere);
     scene::Scene s = flatLit(sphere);

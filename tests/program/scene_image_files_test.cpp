@@ -4,6 +4,8 @@
 // reported by its key, names rebased when the scene moves, each file read
 // once and placed in the texel buffer after the environment's.
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
@@ -140,6 +142,24 @@ TEST(ImagePreviews, EachReadableFileHasAnUprightThumbnailOfAtMostTheSideAsked) {
     EXPECT_EQ(sceneImagePreviews(s, 64).at("environment.image").width, 16);  // never larger than the image
 }
 
+TEST(TextureFiles, AnImageBumpMapIsAFileOfItsMaterialToo) {
+    scene::Scene s = texturedIn("/scenes/tutorial");
+    s.materials[1].bump = scene::BumpPattern::Image;
+    s.materials[1].bumpImage = "heights/bricks.png";
+    s.materials[2].bump = scene::BumpPattern::Image;  // no file named yet
+    std::vector<SceneImageFile> files = textureFiles(s);
+    ASSERT_EQ(files.size(), 5u);
+    EXPECT_EQ(files[1].key, "materials[1].bump_image");
+    EXPECT_EQ(files[1].path, "/scenes/tutorial/heights/bricks.png");
+    EXPECT_EQ(files[3].key, "materials[2].bump_image");
+    std::vector<std::string> problems = textureProblems(s);
+    EXPECT_NE(std::find(problems.begin(), problems.end(),
+                        "materials[2].bump_image: an image bump map needs an image file here"),
+              problems.end());
+    moveSceneDirectory(s, "/elsewhere");
+    EXPECT_EQ(s.materials[1].bumpImage, "../scenes/tutorial/heights/bricks.png");
+}
+
 TEST(TextureFiles, MovingTheSceneRebasesTheTexturesToo) {
     scene::Scene s = texturedIn("/scenes/tutorial");
     moveSceneDirectory(s, "/elsewhere");
@@ -182,9 +202,14 @@ TEST(TextureFiles, ASceneNamesAtMostSixteenImages) {
     std::vector<std::string> problems = scene::validateScene(s);
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_NE(problems[0].find("materials[16].texture_image"), std::string::npos) << problems[0];
-    EXPECT_NE(problems[0].find("at most 16 texture images"), std::string::npos) << problems[0];
+    EXPECT_NE(problems[0].find("at most 16 texture and bump images"), std::string::npos) << problems[0];
     s.materials.back().textureImage = "image0.png";  // the same file again is no new image
     EXPECT_TRUE(scene::validateScene(s).empty());
+    s.materials.back().bump = scene::BumpPattern::Image;  // a bump map's file counts too
+    s.materials.back().bumpImage = "heights.png";
+    problems = scene::validateScene(s);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].find("materials[16].bump_image"), std::string::npos) << problems[0];
 }
 
 }  // namespace

@@ -81,6 +81,7 @@ struct AnalyticDriver {
     bool secondaryRays() const { return true; }
     bool environmentMap() const { return !texels.empty(); }
     bool imageTextures() const { return false; }
+    int textureSamplesPerHit() const { return 0; }
     void setTextureStretch(real) {}
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 

@@ -40,6 +40,8 @@ protected:
         wood.texture = scene::TexturePattern::Image;
         wood.textureImage = "grid.png";
         scene::Material missing = wood;
+        wood.bump = scene::BumpPattern::Image;
+        wood.bumpImage = "grid.png";
         missing.name = "missing";
         missing.textureImage = "missing.png";
         s.materials = {wood, missing};
@@ -61,10 +63,10 @@ TEST_F(ImageFileField, EachReadableFileGetsAThumbnailBesideItsField) {
     frame(editor, ui);  // requests the check
     ui.imageCheck->wait();
     frame(editor, ui);
-    EXPECT_EQ(asked,
-              (std::set<std::string>{"environment.image", "materials[0].texture_image", "materials[1].texture_image"}));
+    EXPECT_EQ(asked, (std::set<std::string>{"environment.image", "materials[0].texture_image",
+                                            "materials[0].bump_image", "materials[1].texture_image"}));
     std::map<std::string, image::Image> previews = ui.imageCheck->previews();
-    EXPECT_EQ(previews.size(), 2u);  // the missing file has none, only its problem
+    EXPECT_EQ(previews.size(), 3u);  // the missing file has none, only its problem
     EXPECT_EQ(previews.at("materials[0].texture_image").width, 8);
     ASSERT_EQ(ui.imageCheck->problems().size(), 1u);
     EXPECT_EQ(ui.imageCheck->problems()[0].rfind("materials[1].texture_image: cannot read image", 0), 0u);

@@ -3,7 +3,9 @@
 // map(p), the scene's field, secondaryRays(), whether the scene has mirrors
 // or glass, environmentMap(), whether rays that leave the scene see an image
 // (environment_lookup.glsl, which reads T(i)), imageTextures(), whether
-// materials have image textures, and setTextureStretch(k), which widens
+// materials have image textures, textureSamplesPerHit(), how many
+// evaluations the texture phase takes (tracer.glsl's TraceState), and
+// setTextureStretch(k), which widens
 // the footprint of the next map()'s image textures (texture_lookup.glsl). GLSL: the
 // generated functions before it; C++: members of the struct this file is
 // included in (cpu/interpreter.inl).
@@ -34,13 +36,15 @@ SHARED_FN Light sceneLight(int index) {
 // walks its ray tree in the same loop, under rayTreeIterationBound.
 SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     TraceSettings settings = sceneTraceSettings();
-    TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
-    s.texturedHits = imageTextures();
-    Sample field = shapeSample(real(0), s.material);
-    RayTree tree = rayTreeBegin();
     // a pixel's angular width at the image centre: the footprint of rays
     // that leave the scene (curved mirrors widen it; that is not modelled)
+    // and the spacing of image bump maps' samples
     real pixelAngle = real(2) * sceneCamera().tanHalfFov / height;
+    TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
+    s.textureSamples = textureSamplesPerHit();
+    s.pixelAngle = pixelAngle;
+    Sample field = shapeSample(real(0), s.material);
+    RayTree tree = rayTreeBegin();
     int limit = secondaryRays() ? rayTreeIterationBound(settings) : traceIterationBound(settings);
     for (int i = 0; i < limit; ++i) {
         Light light = sceneLight(lightIndex(s));
@@ -67,7 +71,8 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
                 break;
             }
             s = traceBeginNode(rayTreeTop(tree));
-            s.texturedHits = imageTextures();
+            s.textureSamples = textureSamplesPerHit();
+            s.pixelAngle = pixelAngle;
             tree = rayTreePop(tree);
         }
     }

@@ -89,6 +89,7 @@ SHARED_FN Material texturedMaterial(Material base, int pattern, vec3 x, real w, 
 const int BUMP_NONE = 0;
 const int BUMP_NOISE = 1;  // value noise of feature size `scale`, two octaves
 const int BUMP_WAVES = 2;  // parallel waves of wavelength `scale` along object x
+const int BUMP_IMAGE = 3;  // a grey image at the primitive's (u, v): texture_lookup.glsl, not a pattern
 
 SHARED_FN real bumpHeight(int pattern, vec3 x, real w) {
     if (pattern == BUMP_NOISE) {

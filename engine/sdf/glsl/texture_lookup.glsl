@@ -9,7 +9,8 @@
 // calls it as the ImageTexture opcode.
 //
 // q0 = (mapping, (u, v) units per scene unit of footprint at distance 1,
-// 1 when the image changes the specular colour too, 0),
+// role, bump depth): role 0 for a colour texture, 1 for one that changes the
+// specular colour too, -1 for a bump map (imageTexturedSample),
 // q1, q2 = the primitive's slots as its mapping reads them,
 // q3 = (first texel, side, levels, 0) of the image: filled in where the
 // images are read (program/scene_images.cpp), so another file is a parameter edit.
@@ -24,12 +25,20 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
     return sampleMipmap(start, side, levels, u, v, lod, t.wrapU, t.wrapV);
 }
 
-// The sample's colours multiplied by the image's colour c.
-SHARED_FN Sample imageTexturedSample(Sample s, vec3 c, bool specular) {
+// The sample with the image's colour c in the role q0.z gives it: its
+// colours multiplied by c (role 0; role 1 the specular colour too), or, for a
+// bump map (role -1, lecture notes 1.2), its bump height the grey value of c
+// (the mean of its channels) times the depth q0.w, which the tracer
+// differentiates over the texture phase's samples around the hit (tracer.glsl).
+SHARED_FN Sample imageTexturedSample(Sample s, vec3 c, vec4 q0) {
     Material m = s.material;
+    if (q0.z < real(0)) {
+        m.bump = q0.w * ((c.x + c.y + c.z) / real(3));
+        return Sample(s.d, s.step, m);
+    }
     m.ambient = m.ambient * c;
     m.diffuse = m.diffuse * c;
-    if (specular) {
+    if (q0.z > real(0)) {
         m.specular = m.specular * c;
     }
     return Sample(s.d, s.step, m);
@@ -41,7 +50,7 @@ SHARED_FN Sample instImageTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1, 
     if (!(textureStretch > real(0))) {
         return s;
     }
-    return imageTexturedSample(s, imageTextureColor(p, length3(eye), q0, q1, q2, q3), q0.z > real(0));
+    return imageTexturedSample(s, imageTextureColor(p, length3(eye), q0, q1, q2, q3), q0);
 }
 
 // Triplanar mapping, for primitives without a parametrization (formulas):
@@ -71,11 +80,11 @@ SHARED_FN vec3 triplanarColor(vec3 p, vec3 gradient, real distance, vec4 q0, vec
 
 // ---- TriplanarTexture: S[dst] = f(S[a], P[b], P[0], formula value and gradient at P[b], slots) ----
 // q0 = (tiles per object unit, tiles per scene unit of footprint at distance 1,
-// 1 when the image changes the specular colour too, 0),
+// role, bump depth) as ImageTexture's,
 // q1 = (first texel, side, levels, 0) of the image, filled in like ImageTexture's q3.
 SHARED_FN Sample instTriplanarTexture(Sample s, vec3 p, vec3 eye, vec4 v, vec4 q0, vec4 q1) {
     if (!(textureStretch > real(0))) {
         return s;
     }
-    return imageTexturedSample(s, triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1), q0.z > real(0));
+    return imageTexturedSample(s, triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1), q0);
 }

@@ -56,7 +56,9 @@ struct TraceState {
     bool inside;        // the ray travels inside a solid: it marches on the negated field
     real pathLength;    // distance from the eye to this ray's origin, for the footprint epsilon
     real enterSlope;    // PHASE_ENTER: the steepest rate of change of the field along the ray so far
-    bool texturedHits;  // the scene has image textures: each hit takes PHASE_TEXTURE (set by the driver)
+    int textureSamples; // evaluations of PHASE_TEXTURE per hit (set by the driver): 0 without image
+                        // textures, 1 for their colour, 5 with an image bump map (four around the hit first)
+    real pixelAngle;    // a pixel's width per unit of distance (set by the driver): the bump samples' spacing
 };
 
 // A ray of the tree `depth` bounces from the eye, starting pathLength from it.
@@ -65,7 +67,7 @@ SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLen
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
                       vec3(real(0)), vec3(real(0)), real(0), real(0), real(1), 0, real(0), real(1), real(0),
-                      real(0), vec3(real(1)), vec3(real(0)), depth, inside, pathLength, real(0), false);
+                      real(0), vec3(real(1)), vec3(real(0)), depth, inside, pathLength, real(0), 0, real(0));
 }
 
 SHARED_FN TraceState traceBegin(Ray ray) { return traceBeginRay(ray, 0, false, real(0)); }
@@ -139,6 +141,18 @@ SHARED_FN real textureFootprintStretch(TraceState s) {
     return slant * TEXTURE_MAX_STRETCH > real(1) ? real(1) / slant : TEXTURE_MAX_STRETCH;
 }
 
+// Image bump maps (texture_lookup.glsl) are differentiated by the notes'
+// central differences, with Delta about one texel of the level the lookups
+// read: the texture phase first evaluates the four tetrahedron vertices
+// around the hit, a pixel's footprint apart, widened by the slant as the
+// lookups' mip level is. (The normal's own samples, epsilon apart, would
+// differentiate the bilinear interpolation between texels, which is
+// discontinuous at every texel edge.)
+const int TEXTURE_COLOR_SAMPLE = 4;  // PHASE_TEXTURE's counter for the evaluation at the hit
+SHARED_FN real bumpSpacing(TraceState s) {
+    return s.pixelAngle * (s.pathLength + s.t) * textureFootprintStretch(s);
+}
+
 SHARED_FN vec3 shadowOrigin(TraceState s) {
     return s.hitPoint + s.normal * (real(2) * s.hitEpsilon);
 }
@@ -146,6 +160,9 @@ SHARED_FN vec3 shadowOrigin(TraceState s) {
 SHARED_FN vec3 tracePoint(TraceState s, Light light, TraceSettings settings) {
     if (s.phase == PHASE_MARCH || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER) {
         return s.rayOrigin + s.rayDirection * s.t;
+    }
+    if (s.phase == PHASE_TEXTURE && s.counter < TEXTURE_COLOR_SAMPLE) {
+        return s.hitPoint + tetrahedronVertex(s.counter) * bumpSpacing(s);
     }
     if (s.phase == PHASE_TEXTURE) {
         return s.hitPoint;
@@ -414,16 +431,32 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
     }
     s.normal = normalize3(s.normalSum);
     s.shadingNormal = bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
-    if (s.texturedHits) {
+    if (s.textureSamples > 0) {
+        // with an image bump map every bump map is differentiated over the
+        // texture phase's wider samples, the procedural ones too
+        if (s.textureSamples > 1) {
+            s.shadingNormal = s.normal;
+        }
         s.phase = PHASE_TEXTURE;
+        s.counter = TEXTURE_COLOR_SAMPLE + 1 - s.textureSamples;
+        s.bumpSum = vec3(real(0));
         return s;
     }
     return beginOcclusion(s, settings);
 }
 
-// The hit's material with its image textures filtered for the slant.
+// The bump samples around the hit, then the hit's material with its image
+// textures filtered for the slant.
 SHARED_FN TraceState advanceTexture(TraceState s, Sample field, TraceSettings settings) {
+    if (s.counter < TEXTURE_COLOR_SAMPLE) {
+        s.bumpSum = s.bumpSum + tetrahedronVertex(s.counter) * field.material.bump;
+        s.counter = s.counter + 1;
+        return s;
+    }
     s.material = field.material;
+    if (s.textureSamples > 1) {
+        s.shadingNormal = bumpedNormal(s.normal, s.bumpSum, bumpSpacing(s));
+    }
     return beginOcclusion(s, settings);
 }
 
@@ -598,8 +631,8 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
 // Worst case of loop iterations for one sample: the GLSL backend checks it against
 // llvmpipe's loop limiter. The march's steps (normal samples of a thin hit
 // among them) stop at maxSteps, 5 over at most, then 5 normal samples and
-// the texture phase's one.
+// the texture phase's five at most.
 SHARED_FN int traceIterationBound(TraceSettings settings) {
     int shadowSamples = settings.shadowMode == SHADOW_NONE ? 0 : SHADOW_SAMPLE_CAP;
-    return settings.maxSteps + 11 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
+    return settings.maxSteps + 15 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
 }
