@@ -300,10 +300,10 @@ private:
         const Instruction shape = program_.code.back();  // the primitive just emitted
         int gradient = -1;  // a formula's tape with its gradient, once, for its triplanar images
         if (m.texture == scene::TexturePattern::Image) {
-            imageTexture(node, shape, gradient, {m.textureImage, m.textureScale, specular(m), 0.0}, sample, point);
+            imageTexture(node, shape, gradient, {m.textureImage, m.textureScale, specular(m), 0.0, filtered(m)}, sample, point);
         } else if (m.texture != scene::TexturePattern::None) {
             double perUnit = 1.0 / m.textureScale;
-            double footprint = footprintPerDistance * perUnit / objectScale_;
+            double footprint = filtered(m) * perUnit / objectScale_;
             int param = addParams(
                 {dvec4(static_cast<double>(m.texture), perUnit, footprint, specular(m)), dvec4(m.textureColor, 0)});
             emit({Opcode::Texture, sample, sample, point, param, -1, 0});
@@ -311,11 +311,11 @@ private:
         // the depth in object units, like the pattern: scale nodes scale the bumps too
         if (m.bump == scene::BumpPattern::Image) {
             program_.imageBumps = true;
-            imageTexture(node, shape, gradient, {m.bumpImage, m.bumpScale, kImageBump, m.bumpDepth * objectScale_},
+            imageTexture(node, shape, gradient, {m.bumpImage, m.bumpScale, kImageBump, m.bumpDepth * objectScale_, filtered(m)},
                          sample, point);
         } else if (m.bump != scene::BumpPattern::None) {
             double perUnit = 1.0 / m.bumpScale;
-            double footprint = footprintPerDistance * perUnit / objectScale_;
+            double footprint = filtered(m) * perUnit / objectScale_;
             int param = addParams({dvec4(static_cast<double>(m.bump), perUnit, footprint, m.bumpDepth * objectScale_)});
             emit({Opcode::Bump, sample, sample, point, param, -1, 0});
         }
@@ -329,6 +329,7 @@ private:
         double tileSize;          // the material's texture or bump scale
         double role;              // specular(m) for a colour texture, kImageBump for a bump map
         double bumpDepth;         // of a bump map
+        double footprint;         // per distance: filtered(m)
     };
     static constexpr double kImageBump = -1.0;
 
@@ -352,17 +353,21 @@ private:
             }
             double tiles = 1.0 / use.tileSize;
             int param = addParams(
-                {dvec4(tiles, footprintPerDistance * tiles / objectScale_, use.role, use.bumpDepth), dvec4(0.0)});
+                {dvec4(tiles, use.footprint * tiles / objectScale_, use.role, use.bumpDepth), dvec4(0.0)});
             program_.textureSlots.push_back({param + 1, fileIndex});
             emit({Opcode::TriplanarTexture, sample, sample, point, param, -1, gradient});
             return;
         }
         TextureMapping map = textureMapping(node, use.tileSize);
-        double footprint = footprintPerDistance * map.uvPerUnit / objectScale_;
+        double footprint = use.footprint * map.uvPerUnit / objectScale_;
         int param = addParams({dvec4(map.mapping, footprint, use.role, use.bumpDepth), map.s0, map.s1, dvec4(0.0)});
         program_.textureSlots.push_back({param + 3, fileIndex});
         emit({Opcode::ImageTexture, sample, sample, point, param, -1, 0});
     }
+
+    // The footprint per distance the material's textures and bump maps are
+    // filtered over: 0 reads images at level 0 and patterns unfiltered.
+    double filtered(const scene::Material& m) const { return m.textureFiltering ? footprintPerDistance : 0.0; }
 
     // The textures' flag for the specular colour, as their instructions read it.
     static double specular(const scene::Material& m) { return m.textureSpecular ? 1.0 : 0.0; }

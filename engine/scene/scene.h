@@ -87,6 +87,7 @@ struct Material {
     glm::dvec3 textureColor{0.1};
     std::string textureImage;  // file, relative to the scene's folder
     bool textureSpecular = false;  // the texture modulates the specular colour R_E too
+    bool textureFiltering = true;  // false: images read at full resolution only, patterns unfiltered
     // Bump map (sdf/glsl/texture.glsl): a height field of the object-space
     // point that perturbs the shading normal; the surface stays as it is.
     BumpPattern bump = BumpPattern::None;

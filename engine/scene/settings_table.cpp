@@ -105,6 +105,7 @@ const Setting<Material> kMaterial[] = {
     {"texture_color", "texture colour", "", Colour, &Material::textureColor},
     {"texture_image", "texture image", "", ImageFile, &Material::textureImage},
     {"texture_specular", "texture on specular", "", Flag, &Material::textureSpecular},
+    {"texture_filtering", "texture filtering", "", Flag, &Material::textureFiltering},
     {"bump", "bump map", "", Choice, choiceMember<&Material::bump>(), Any, 0, 0, kBumpPatternNames},
     {"bump_scale", "bump scale", "", Real, &Material::bumpScale, Closed, 1e-4, 1e4, {}, {0.005, 1e-4, 1e4, "%.3f"}},
     {"bump_depth", "bump depth", "", Real, &Material::bumpDepth, Closed, 0, 1e3, {}, {0.001, 0, 1e3, "%.4f"}},
