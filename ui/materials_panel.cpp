@@ -27,6 +27,8 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
             s.materials.push_back(m);
         }));
     }
+    // the image fields shown: the files the materials' textures and bump maps read
+    const std::vector<program::SceneImageFile> files = program::textureFiles(editor.scene());
     for (size_t i = 0; i < editor.scene().materials.size(); ++i) {
         scene::Material m = editor.scene().materials[i];
         ImGui::PushID(static_cast<int>(i));
@@ -43,8 +45,6 @@ void drawMaterialsPanel(Editor& editor, UiState& ui) {
                 }));
             }
             const std::string path = "materials[" + std::to_string(i) + "]";
-            // only the files the material's texture and bump map read
-            const std::vector<program::SceneImageFile> files = program::textureFiles(editor.scene());
             for (const scene::Setting<scene::Material>& row : scene::materialSettings()) {
                 std::string key = path + "." + std::string(row.key);
                 if (row.type != scene::SettingType::ImageFile) {

@@ -14,6 +14,7 @@
 
 #include "image/image_io.h"
 #include "image/mipmaps.h"
+#include "sdf/shared.h"
 
 namespace sdfwb::image {
 namespace {
@@ -138,22 +139,20 @@ std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<s
 }
 
 Image mipmapPreview(const MipmappedImages& images, int index, int maxSide) {
-    const std::size_t perImage = (4 * static_cast<std::size_t>(images.side) * static_cast<std::size_t>(images.side) - 1) / 3;
-    std::size_t start = perImage * static_cast<std::size_t>(index);
-    int side = images.side;
-    while (side > std::max(maxSide, 1)) {
-        start += static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
-        side /= 2;
-    }
+    namespace shared = sdf::f64;
+    int level = 0;
+    while ((images.side >> level) > std::max(maxSide, 1)) ++level;
+    const int side = images.side >> level;
+    const std::size_t start =
+        static_cast<std::size_t>(shared::mipPyramidTexels(images.side)) * static_cast<std::size_t>(index) +
+        static_cast<std::size_t>(shared::mipLevelOffset(images.side, level));
     Image preview(side, side);
     for (int row = 0; row < side; ++row) {
         for (int column = 0; column < side; ++column) {
             // texel rows run from the bottom, image rows from the top
-            const glm::vec4& texel =
-                images.texels[start + static_cast<std::size_t>((side - 1 - row) * side + column)];
+            const glm::vec4& texel = images.texels[start + static_cast<std::size_t>((side - 1 - row) * side + column)];
             for (int c = 0; c < 3; ++c)
-                preview.rgb[3 * static_cast<std::size_t>(row * side + column) + static_cast<std::size_t>(c)] =
-                    texel[c];
+                preview.rgb[3 * static_cast<std::size_t>(row * side + column) + static_cast<std::size_t>(c)] = texel[c];
         }
     }
     return preview;

@@ -300,7 +300,7 @@ private:
         const Instruction shape = program_.code.back();  // the primitive just emitted
         int gradient = -1;  // a formula's tape with its gradient, once, for its triplanar images
         if (m.texture == scene::TexturePattern::Image) {
-            imageTexture(node, shape, gradient, {m.textureImage, m.textureScale, specular(m), 0.0, filtered(m)}, sample, point);
+            imageTexture(node, shape, gradient, {m.textureImage, m.textureScale, colorRole(m), 0.0, filtered(m)}, sample, point);
         } else if (m.texture != scene::TexturePattern::None) {
             double perUnit = 1.0 / m.textureScale;
             double footprint = filtered(m) * perUnit / objectScale_;
@@ -311,7 +311,7 @@ private:
         // the depth in object units, like the pattern: scale nodes scale the bumps too
         if (m.bump == scene::BumpPattern::Image) {
             program_.imageBumps = true;
-            imageTexture(node, shape, gradient, {m.bumpImage, m.bumpScale, kImageBump, m.bumpDepth * objectScale_, filtered(m)},
+            imageTexture(node, shape, gradient, {m.bumpImage, m.bumpScale, codes::IMAGE_AS_BUMP, m.bumpDepth * objectScale_, filtered(m)},
                          sample, point);
         } else if (m.bump != scene::BumpPattern::None) {
             double perUnit = 1.0 / m.bumpScale;
@@ -327,11 +327,10 @@ private:
     struct ImageUse {
         const std::string& file;  // as the material names it
         double tileSize;          // the material's texture or bump scale
-        double role;              // specular(m) for a colour texture, kImageBump for a bump map
+        int role;                 // IMAGE_AS_* of the shared texture lookup
         double bumpDepth;         // of a bump map
         double footprint;         // per distance: filtered(m)
     };
-    static constexpr double kImageBump = -1.0;
 
     // The image's place in the texel buffer (the last slot) is left for the
     // backends to fill when they read the file (program/scene_images.h).
@@ -371,6 +370,9 @@ private:
 
     // The textures' flag for the specular colour, as their instructions read it.
     static double specular(const scene::Material& m) { return m.textureSpecular ? 1.0 : 0.0; }
+    static int colorRole(const scene::Material& m) {
+        return m.textureSpecular ? codes::IMAGE_AS_COLOR_AND_SPECULAR : codes::IMAGE_AS_COLOR;
+    }
 
     // x minus the nearest multiple of period (period > 0), exact in double for
     // the magnitudes of a scene.

@@ -12,6 +12,12 @@ const int TEXTURE_STRIPES = 2;  // slabs of thickness `scale` stacked along obje
 const int TEXTURE_NOISE = 3;    // value noise of feature size `scale`, two octaves
 const int TEXTURE_IMAGE = 4;    // an image at the primitive's (u, v): texture_lookup.glsl, not a pattern
 
+// What an image does to the sample it is looked up for (texture_lookup.glsl's
+// imageTexturedSample; the ImageTexture and TriplanarTexture instructions' q0.z).
+const int IMAGE_AS_COLOR = 0;               // multiplies the ambient and diffuse colours
+const int IMAGE_AS_COLOR_AND_SPECULAR = 1;  // and the specular colour (texture_specular)
+const int IMAGE_AS_BUMP = 2;                // its grey value times q0.w is the bump height
+
 SHARED_FN real fractr(real x) { return x - floor(x); }
 
 // A hash of a lattice point into [0, 1) from + and * only (Hoskins's "hash

@@ -9,8 +9,7 @@
 // calls it as the ImageTexture opcode.
 //
 // q0 = (mapping, (u, v) units per scene unit of footprint at distance 1,
-// role, bump depth): role 0 for a colour texture, 1 for one that changes the
-// specular colour too, -1 for a bump map (imageTexturedSample),
+// role, bump depth): the role IMAGE_AS_* (texture.glsl),
 // q1, q2 = the primitive's slots as its mapping reads them,
 // q3 = (first texel, side, levels, 0) of the image: filled in where the
 // images are read (program/scene_images.cpp), so another file is a parameter edit.
@@ -26,19 +25,20 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
 }
 
 // The sample with the image's colour c in the role q0.z gives it: its
-// colours multiplied by c (role 0; role 1 the specular colour too), or, for a
-// bump map (role -1, lecture notes 1.2), its bump height the grey value of c
-// (the mean of its channels) times the depth q0.w, which the tracer
-// differentiates over the texture phase's samples around the hit (tracer.glsl).
+// colours multiplied by c, or, for a bump map (lecture notes 1.2), its bump
+// height the grey value of c (the mean of its channels) times the depth q0.w,
+// which the tracer differentiates over the texture phase's samples around
+// the hit (tracer.glsl).
 SHARED_FN Sample imageTexturedSample(Sample s, vec3 c, vec4 q0) {
+    int role = int(q0.z);
     Material m = s.material;
-    if (q0.z < real(0)) {
+    if (role == IMAGE_AS_BUMP) {
         m.bump = q0.w * ((c.x + c.y + c.z) / real(3));
         return Sample(s.d, s.step, m);
     }
     m.ambient = m.ambient * c;
     m.diffuse = m.diffuse * c;
-    if (q0.z > real(0)) {
+    if (role == IMAGE_AS_COLOR_AND_SPECULAR) {
         m.specular = m.specular * c;
     }
     return Sample(s.d, s.step, m);

@@ -430,13 +430,10 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
         return endMarchIfSpent(s, settings);
     }
     s.normal = normalize3(s.normalSum);
-    s.shadingNormal = bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
+    // with an image bump map every bump map is differentiated over the
+    // texture phase's wider samples (advanceTexture), the procedural ones too
+    s.shadingNormal = s.textureSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
     if (s.textureSamples > 0) {
-        // with an image bump map every bump map is differentiated over the
-        // texture phase's wider samples, the procedural ones too
-        if (s.textureSamples > 1) {
-            s.shadingNormal = s.normal;
-        }
         s.phase = PHASE_TEXTURE;
         s.counter = TEXTURE_COLOR_SAMPLE + 1 - s.textureSamples;
         s.bumpSum = vec3(real(0));
