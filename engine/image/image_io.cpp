@@ -7,6 +7,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "image/encoding.h"
+#include "image/exr_header.h"
 #include "io/atomic_file.h"
 
 namespace sdfwb::image {
@@ -104,6 +105,9 @@ void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, con
 }
 
 Image readImage(const std::filesystem::path& path, std::size_t maxPixels) {
+    if (std::string problem = exrHeaderProblem(path); !problem.empty()) {
+        throw std::runtime_error("cannot read image " + path.string() + ": " + problem);
+    }
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());

@@ -1,0 +1,62 @@
+#include "image/exr_header.h"
+
+#include <cstdint>
+#include <fstream>
+
+namespace sdfwb::image {
+namespace {
+
+constexpr std::uint32_t kMagic = 20000630;        // 0x762f3101, little endian
+constexpr std::uint32_t kMultipartFlag = 0x1000;  // in the version field: headers follow each other
+constexpr std::size_t kMaxName = 256;             // attribute names and types (OpenEXR allows 255)
+
+std::uint32_t littleEndian32(const unsigned char* b) {
+    return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
+}
+
+// A NUL-terminated string of at most kMaxName bytes; false at the end of the file or past the bound.
+bool readName(std::istream& in, std::string& name) {
+    name.clear();
+    for (char c; in.get(c);) {
+        if (c == '\0') return true;
+        if (name.size() == kMaxName) return false;
+        name.push_back(c);
+    }
+    return false;
+}
+
+}  // namespace
+
+std::string exrHeaderProblem(const std::filesystem::path& path) {
+    std::error_code error;
+    const std::uintmax_t fileSize = std::filesystem::file_size(path, error);
+    std::ifstream in(path, std::ios::binary);
+    unsigned char start[8];
+    if (error || !in.read(reinterpret_cast<char*>(start), 8) || littleEndian32(start) != kMagic) return "";
+    const bool multipart = (littleEndian32(start + 4) & kMultipartFlag) != 0;
+    const std::string tooShort = "its OpenEXR header is cut short";
+    std::string name, type;
+    // each attribute takes at least 6 bytes of the file, so the walk ends
+    for (bool headerStart = true;;) {
+        if (!readName(in, name)) return tooShort;
+        if (name.empty()) {
+            // the end of a header; a multipart file ends its headers with an empty one
+            if (!multipart || headerStart) return "";
+            headerStart = true;
+            continue;
+        }
+        headerStart = false;
+        unsigned char size[4];
+        if (!readName(in, type) || !in.read(reinterpret_cast<char*>(size), 4)) return tooShort;
+        const std::uint32_t bytes = littleEndian32(size);
+        const std::uintmax_t position = static_cast<std::uintmax_t>(in.tellg());
+        if (bytes > 0x7fffffffu || bytes > fileSize - position) {
+            return "its OpenEXR header attribute \"" + name + "\" claims " +
+                   std::to_string(static_cast<std::int32_t>(bytes)) + " bytes, past the file's end (" +
+                   std::to_string(fileSize) + " bytes)";
+        }
+        in.seekg(static_cast<std::streamoff>(bytes), std::ios::cur);
+    }
+}
+
+}  // namespace sdfwb::image

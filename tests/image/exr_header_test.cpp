@@ -1,0 +1,63 @@
+// The walk over an OpenEXR header before OpenEXR reads it (image/exr_header.h):
+// files the writer makes pass, an attribute claiming more bytes than the file
+// holds is named, a cut header is refused, other formats are not its business.
+
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "image/exr_header.h"
+#include "image/image_io.h"
+#include "support/scratch_folder.h"
+
+namespace sdfwb::image {
+namespace {
+
+std::string bytesOf(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write(const std::filesystem::path& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+class ExrHeader : public testing::Test {
+protected:
+    sdfwb::test::ScratchFolder folder;
+    std::filesystem::path good = folder / "good.exr";
+    void SetUp() override { writeImage(good, Image(8, 6)); }
+};
+
+TEST_F(ExrHeader, AFileTheWriterMadePasses) { EXPECT_EQ(exrHeaderProblem(good), ""); }
+
+TEST_F(ExrHeader, AnAttributeClaimingMoreThanTheFileIsNamedBeforeOpenExrReadsIt) {
+    std::string bytes = bytesOf(good);
+    const std::size_t at = bytes.find(std::string("channels\0chlist\0", 16));
+    ASSERT_NE(at, std::string::npos);
+    bytes.replace(at + 16, 4, std::string("\xff\xff\xff\x70", 4));  // 1895825407 bytes
+    write(folder / "bad.exr", bytes);
+    std::string problem = exrHeaderProblem(folder / "bad.exr");
+    EXPECT_EQ(
+        problem.rfind("its OpenEXR header attribute \"channels\" claims 1895825407 bytes, past the file's end", 0), 0u)
+        << problem;
+    try {
+        readImage(folder / "bad.exr");
+        ADD_FAILURE() << "read";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
+    }
+}
+
+TEST_F(ExrHeader, AHeaderCutShortIsRefusedAndOtherFormatsAreLeftAlone) {
+    write(folder / "cut.exr", bytesOf(good).substr(0, 12));  // inside the first attribute's name
+    EXPECT_EQ(exrHeaderProblem(folder / "cut.exr"), "its OpenEXR header is cut short");
+    writeImage(folder / "picture.png", Image(4, 4));
+    EXPECT_EQ(exrHeaderProblem(folder / "picture.png"), "");
+    EXPECT_EQ(exrHeaderProblem(folder / "missing.exr"), "");  // OpenImageIO says why it cannot be read
+}
+
+}  // namespace
+}  // namespace sdfwb::image
