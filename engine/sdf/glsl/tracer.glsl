@@ -512,14 +512,20 @@ SHARED_FN TraceState advanceOcclusion(TraceState s, Sample field, TraceSettings 
 // before this sample, at a distance sqrt(h^2 - y^2) from the ray. Taking
 // k h / t at the samples only made bands like wood grain in the lit side of
 // a box with k ~ 8: where the samples fell relative to the occluder
-// changed from pixel to pixel.
+// changed from pixel to pixel. The meeting circle counts only between the
+// two samples (y < step), where the estimate runs continuously from this
+// sample's (y = 0) to the previous one's (y = step): a ray moving away from
+// a surface (h = lastDistance + step) has its spheres meet on the ray behind
+// the previous sample, and counting that as a closest approach of 0 turned
+// such rays dark at random (speckled penumbrae of slow-stepping fields, and
+// a verdict a last bit could flip between the backends).
 SHARED_FN real penumbraEstimate(TraceState s, real h, real k) {
     real estimate = k * h / s.shadowT;
     real last = s.lastDistance;
     real step = s.shadowLastStep;
     if (last > real(0) && h > real(0) && step > real(0)) {
         real y = (h * h - last * last + step * step) / (real(2) * step);
-        if (y > real(0) && y < h && y < s.shadowT) {
+        if (y > real(0) && y < h && y < step && y < s.shadowT) {
             estimate = min(estimate, k * sqrt(h * h - y * y) / (s.shadowT - y));
         }
     }
