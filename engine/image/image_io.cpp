@@ -104,7 +104,7 @@ void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, con
     });
 }
 
-Image readImage(const std::filesystem::path& path, std::size_t maxPixels) {
+Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelValues values) {
     if (std::string problem = exrHeaderProblem(path); !problem.empty()) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + problem);
     }
@@ -125,7 +125,10 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels) {
     // without alpha) for all three; the rest (alpha, extra layers) is not
     // read, so a file of many channels costs no more memory than RGB
     const int channels = spec.nchannels >= 3 ? 3 : 1;
-    bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
+    const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
+    // 16-bit PNGs and TIFFs store the display encoding as 8-bit ones do
+    // (OpenImageIO hands them over as fractions of 65535, not decoded)
+    const bool displayEncoded = eightBit || spec.format == OIIO::TypeDesc::UINT16;
     std::vector<float> pixels(image.pixelCount() * static_cast<size_t>(channels));
     std::vector<std::uint8_t> bytes;
     bool ok = false;
@@ -139,10 +142,15 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + in->geterror());
     }
     in->close();
+    const bool decode = displayEncoded && values == PixelValues::Colour;
+    auto value = [&](size_t source) {
+        if (eightBit) return decode ? decodeSrgb8(bytes[source]) : static_cast<float>(bytes[source]) / 255.0f;
+        return decode ? linearFromSrgb(pixels[source]) : pixels[source];
+    };
     for (size_t i = 0; i < image.pixelCount(); ++i) {
         for (int c = 0; c < 3; ++c) {
             size_t source = i * static_cast<size_t>(channels) + static_cast<size_t>(std::min(c, channels - 1));
-            image.rgb[3 * i + static_cast<size_t>(c)] = eightBit ? decodeSrgb8(bytes[source]) : pixels[source];
+            image.rgb[3 * i + static_cast<size_t>(c)] = value(source);
         }
     }
     return image;

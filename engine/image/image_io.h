@@ -27,11 +27,18 @@ void writeImage(const std::filesystem::path& path, const Image& image, const Met
 void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, const Image& image,
                 const Metadata& metadata = {});
 
-// Reads any image OpenImageIO can read as linear RGB (8-bit data is decoded
-// from sRGB; a one- or two-channel image is grey). Throws std::runtime_error
-// naming the path, also for an image of more than `maxPixels` pixels (checked
-// before its pixels are read).
-Image readImage(const std::filesystem::path& path, std::size_t maxPixels = std::size_t(1) << 28);
+// What a file's pixels hold. Colour: 8- and 16-bit pixels store the display
+// encoding and are decoded from sRGB to linear; floats are linear already.
+// Data (a bump map's heights): every pixel is taken as stored, 8- and 16-bit
+// ones as their fraction of the largest value, as painting programs and
+// renderers treat height maps (a grey of 128 is half way up, not 0.22).
+enum class PixelValues { Colour, Data };
+
+// Reads any image OpenImageIO can read as RGB (a one- or two-channel image is
+// grey). Throws std::runtime_error naming the path, also for an image of more
+// than `maxPixels` pixels (checked before its pixels are read).
+Image readImage(const std::filesystem::path& path, std::size_t maxPixels = std::size_t(1) << 28,
+                PixelValues values = PixelValues::Colour);
 
 // Whether the file stores the display encoding (8-bit) rather than linear floats.
 bool isDisplayEncoded(const std::filesystem::path& path);

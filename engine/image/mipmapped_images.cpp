@@ -58,11 +58,12 @@ struct CacheKey {
     std::vector<std::uintmax_t> sizes;
     std::vector<std::filesystem::file_time_type> times;
     int maxSide;
+    PixelValues values;
     bool operator==(const CacheKey&) const = default;
 };
 
-CacheKey keyOf(const std::vector<std::filesystem::path>& files, int maxSide) {
-    CacheKey key{{}, {}, {}, maxSide};
+CacheKey keyOf(const std::vector<std::filesystem::path>& files, int maxSide, PixelValues values) {
+    CacheKey key{{}, {}, {}, maxSide, values};
     for (const std::filesystem::path& file : files) {
         std::error_code error;
         key.files.push_back(std::filesystem::absolute(file, error));
@@ -74,11 +75,11 @@ CacheKey keyOf(const std::vector<std::filesystem::path>& files, int maxSide) {
 
 }  // namespace
 
-MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& files, int maxSide) {
+MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& files, int maxSide, PixelValues values) {
     std::vector<Image> images;
     int largest = 1;
     for (const std::filesystem::path& file : files) {
-        images.push_back(readImage(file, kMaxImageFilePixels));
+        images.push_back(readImage(file, kMaxImageFilePixels, values));
         largest = std::max({largest, images.back().width, images.back().height});
     }
     MipmappedImages out;
@@ -92,7 +93,7 @@ MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& fi
 }
 
 std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
-                                                             int maxSide) {
+                                                             int maxSide, PixelValues values) {
     // Entries up to a texel budget (the most recent always stays): an editor
     // switching between two maps keeps both, and a scene's textures stay
     // with its map. A failure is kept too (as its message), so a renderer
@@ -107,7 +108,7 @@ std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<s
     };
     static std::mutex mutex;
     static std::list<Entry> entries;
-    CacheKey key = keyOf(files, maxSide);
+    CacheKey key = keyOf(files, maxSide, values);
     auto answer = [](const Entry& entry) {
         if (!entry.images) throw std::runtime_error(entry.error);
         return entry.images;
@@ -123,7 +124,7 @@ std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<s
     }
     Entry entry{std::move(key), nullptr, ""};
     try {
-        entry.images = std::make_shared<const MipmappedImages>(loadMipmappedImages(files, maxSide));
+        entry.images = std::make_shared<const MipmappedImages>(loadMipmappedImages(files, maxSide, values));
     } catch (const std::exception& error) {
         entry.error = error.what();
     }

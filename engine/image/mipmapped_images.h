@@ -14,6 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "image/image.h"
+#include "image/image_io.h"
 
 namespace sdfwb::image {
 
@@ -35,16 +36,18 @@ inline constexpr std::size_t kMaxImageFilePixels = std::size_t(1) << 24;
 // an HDR file must not turn the whole frame non-finite).
 inline constexpr float kMaxTexelValue = 1e9f;
 
-// Reads and converts the images (8-bit files decoded from sRGB to linear).
+// Reads and converts the images (colour: 8- and 16-bit files decoded from
+// sRGB to linear; data: as stored, image_io.h).
 // Throws std::runtime_error "cannot read image PATH: reason".
-MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& files, int maxSide);
+MipmappedImages loadMipmappedImages(const std::vector<std::filesystem::path>& files, int maxSide,
+                                    PixelValues values = PixelValues::Colour);
 
 // loadMipmappedImages through a small cache keyed by the files' paths,
-// sizes and modification times, so rendering a scene again (every edit) does
-// not read its images again; failures are cached as well and thrown again.
-// Thread-safe.
+// sizes and modification times (and how their pixels are read), so rendering
+// a scene again (every edit) does not read its images again; failures are
+// cached as well and thrown again. Thread-safe.
 std::shared_ptr<const MipmappedImages> cachedMipmappedImages(const std::vector<std::filesystem::path>& files,
-                                                             int maxSide);
+                                                             int maxSide, PixelValues values = PixelValues::Colour);
 
 // Image `index` of `images` at its largest mip level of side at most
 // `maxSide` (at least 1 x 1), rows from the top: a thumbnail for the editor.

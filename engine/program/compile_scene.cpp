@@ -339,7 +339,7 @@ private:
     // gets a second tape with one).
     void imageTexture(const Node& node, const Instruction& shape, int& gradient, const ImageUse& use, int sample,
                       int point) {
-        std::string file = sceneFilePath(scene_, use.file).string();
+        const Program::TextureFile file{sceneFilePath(scene_, use.file).string(), use.role == codes::IMAGE_AS_BUMP};
         auto known = std::find(program_.textureFiles.begin(), program_.textureFiles.end(), file);
         if (known == program_.textureFiles.end()) known = program_.textureFiles.insert(known, file);
         const int fileIndex = static_cast<int>(known - program_.textureFiles.begin());

@@ -106,15 +106,21 @@ struct Program {
     int environmentKind = 0;
     std::vector<std::string> environmentFiles;
     double environmentIntensity = 1.0;
-    // Image textures (sdf/glsl/texture_lookup.glsl): each file once, resolved
-    // like the environment's, and the ImageTexture image slots that name one;
-    // the backends fill those slots with the image's place in their texel
-    // buffer when they read the files (program/scene_images.h).
+    // Image textures (sdf/glsl/texture_lookup.glsl): each file once per way
+    // it is read, resolved like the environment's, and the ImageTexture image
+    // slots that name one; the backends fill those slots with the image's
+    // place in their texel buffer when they read the files
+    // (program/scene_images.h).
+    struct TextureFile {
+        std::string path;
+        bool heights = false;  // a bump map's: its pixels are data, not colour (image::PixelValues)
+        bool operator==(const TextureFile&) const = default;
+    };
     struct TextureSlot {
         int slot;
         int file;  // index into textureFiles
     };
-    std::vector<std::string> textureFiles;
+    std::vector<TextureFile> textureFiles;
     std::vector<TextureSlot> textureSlots;
     // Some material's bump map is an image: the tracer's texture phase takes
     // four samples of its own around each hit to differentiate it. Structural.

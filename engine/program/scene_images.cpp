@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "image/encoding.h"
 #include "scene/settings_table.h"
 #include "sdf/shared.h"
 
@@ -13,6 +14,8 @@ namespace shared = sdf::f64;
 int environmentSide(int kind) { return kind == shared::ENVIRONMENT_BOX ? image::kMaxBoxFaceSide : image::kMaxEnvironmentSide; }
 
 std::vector<std::filesystem::path> paths(const std::vector<std::string>& files) { return {files.begin(), files.end()}; }
+
+image::PixelValues pixelValues(bool heights) { return heights ? image::PixelValues::Data : image::PixelValues::Colour; }
 
 }  // namespace
 
@@ -91,7 +94,8 @@ std::vector<SceneImageFile> textureFiles(const scene::Scene& scene) {
         if (m.texture == scene::TexturePattern::Image)
             files.push_back({path + "texture_image", m.textureImage, sceneFilePath(scene, m.textureImage)});
         if (m.bump == scene::BumpPattern::Image)
-            files.push_back({path + "bump_image", m.bumpImage, sceneFilePath(scene, m.bumpImage)});
+            files.push_back(
+                {path + "bump_image", m.bumpImage, sceneFilePath(scene, m.bumpImage), image::PixelValues::Data});
     }
     return files;
 }
@@ -100,12 +104,13 @@ std::vector<std::string> textureProblems(const scene::Scene& scene) {
     std::vector<std::string> problems;
     for (const SceneImageFile& file : textureFiles(scene)) {
         if (file.name.empty()) {
-            problems.push_back(file.key + ": an image " + (file.key.ends_with("bump_image") ? "bump map" : "texture") +
+            problems.push_back(file.key + ": an image " +
+                               (file.values == image::PixelValues::Data ? "bump map" : "texture") +
                                " needs an image file here");
             continue;
         }
         try {
-            image::cachedMipmappedImages({file.path}, image::kMaxTextureSide);
+            image::cachedMipmappedImages({file.path}, image::kMaxTextureSide, file.values);
         } catch (const std::exception& error) {
             problems.push_back(file.key + ": " + error.what());
         }
@@ -126,9 +131,15 @@ std::map<std::string, image::Image> sceneImagePreviews(const scene::Scene& scene
         std::vector<std::filesystem::path> all;
         for (const SceneImageFile& file : files) all.push_back(file.path);
         try {
-            auto images = image::cachedMipmappedImages(all, side);
-            for (std::size_t i = 0; i < files.size(); ++i)
-                previews[files[i].key] = image::mipmapPreview(*images, static_cast<int>(i), maxSide);
+            auto images = image::cachedMipmappedImages(all, side, files.front().values);
+            for (std::size_t i = 0; i < files.size(); ++i) {
+                image::Image thumbnail = image::mipmapPreview(*images, static_cast<int>(i), maxSide);
+                // heights are shown as the file stores them: each value as
+                // its display encoding, not as a linear colour
+                if (files[i].values == image::PixelValues::Data)
+                    for (float& value : thumbnail.rgb) value = image::linearFromSrgb(value);
+                previews[files[i].key] = std::move(thumbnail);
+            }
         } catch (const std::exception&) {
         }
     };
@@ -187,9 +198,10 @@ ResolvedImages resolveImages(const Program& program) {
                                    program.environmentIntensity};
         out.slots.emplace_back(shared::ENVIRONMENT_SLOT, shared::environmentSlot(map, 0));
     }
-    for (const std::string& file : program.textureFiles) {
+    for (const Program::TextureFile& file : program.textureFiles) {
         try {
-            out.textures.push_back(image::cachedMipmappedImages({file}, image::kMaxTextureSide));
+            out.textures.push_back(
+                image::cachedMipmappedImages({file.path}, image::kMaxTextureSide, pixelValues(file.heights)));
         } catch (const std::exception&) {
             out.textures.push_back(image::placeholderImages(1));
         }

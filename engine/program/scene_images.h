@@ -26,6 +26,7 @@ struct SceneImageFile {
     std::string key;   // JSON path of the field that names it: "environment.box_px", "materials[2].texture_image"
     std::string name;  // as the scene names it; "" is a problem, not a file
     std::filesystem::path path;
+    image::PixelValues values = image::PixelValues::Colour;  // a bump map's are data (heights)
 };
 
 // The files the scene's map reads, in the shared sampler's image order (the

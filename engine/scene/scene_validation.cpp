@@ -163,22 +163,22 @@ std::vector<std::string> validateScene(const Scene& scene, FormulaVerdicts* verd
         out.settings(lightSettings(), scene.lights[i], "lights[" + std::to_string(i) + "]");
     }
     std::set<std::string> names;
-    std::set<std::string> images;
+    std::set<std::pair<std::string, bool>> images;  // a file read as colour and as heights is two images
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
         const std::string path = "materials[" + std::to_string(i) + "]";
         out.settings(materialSettings(), m, path);
         out.fail(path + ".name", materialNameProblem(m.name, names));
-        auto count = [&](bool used, const std::string& file, const char* key) {
+        auto count = [&](bool used, const std::string& file, bool heights, const char* key) {
             if (!used) return;
-            images.insert(file);
+            images.insert({file, heights});
             if (images.size() == static_cast<size_t>(kMaxTextureImages) + 1) {
                 out.fail(path + "." + key, "a scene may use at most " + std::to_string(kMaxTextureImages) +
                                                " texture and bump images");
             }
         };
-        count(m.texture == TexturePattern::Image, m.textureImage, "texture_image");
-        count(m.bump == BumpPattern::Image, m.bumpImage, "bump_image");
+        count(m.texture == TexturePattern::Image, m.textureImage, false, "texture_image");
+        count(m.bump == BumpPattern::Image, m.bumpImage, true, "bump_image");
     }
     out.tree(scene.root, verdicts);
     for (std::string& problem : materialReferenceProblems(scene)) out.problems.push_back(std::move(problem));

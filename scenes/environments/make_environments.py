@@ -18,11 +18,12 @@ import zlib
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def write_png(name, width, height, pixel):
-    """pixel(x, y) -> linear (r, g, b); y = 0 is the top row; stored as sRGB 8-bit."""
+def write_png(name, width, height, pixel, colour=True):
+    """pixel(x, y) -> linear (r, g, b); y = 0 is the top row; stored as sRGB 8-bit,
+    or with colour=False (data such as heights) as the fraction of 255 itself."""
     def encode(c):
         c = max(0.0, min(1.0, c))
-        s = 12.92 * c if c <= 0.0031308 else 1.055 * c ** (1 / 2.4) - 0.055
+        s = (12.92 * c if c <= 0.0031308 else 1.055 * c ** (1 / 2.4) - 0.055) if colour else c
         return int(round(s * 255))
     rows = bytearray()
     for y in range(height):

@@ -20,9 +20,9 @@ _environments = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(_environments)
 
 
-def write_png(name, width, height, pixel):
+def write_png(name, width, height, pixel, colour=True):
     _environments.HERE = HERE
-    _environments.write_png(name, width, height, pixel)
+    _environments.write_png(name, width, height, pixel, colour)
 
 
 def uv_grid(x, y, size=256, cells=8):
@@ -110,4 +110,4 @@ if __name__ == "__main__":
     write_png("uv_grid.png", 256, 256, uv_grid)
     write_png("planet.png", 512, 256, planet)
     write_png("bricks.png", 128, 128, bricks)
-    write_png("bricks_height.png", 128, 128, bricks_height)
+    write_png("bricks_height.png", 128, 128, bricks_height, colour=False)  # heights are data

@@ -7,8 +7,10 @@
 #include <fstream>
 #include <random>
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include "image/encoding.h"
 #include "image/image_io.h"
 #include "image/mipmapped_images.h"
 #include "image/mipmaps.h"
@@ -108,6 +110,33 @@ TEST_F(MipmappedImagesTest, AnImageOverThePixelLimitIsRefusedBeforeItsPixelsAreR
     } catch (const std::runtime_error& error) {
         EXPECT_NE(std::string(error.what()).find("64 x 64 pixels of 3 channels"), std::string::npos) << error.what();
     }
+}
+
+TEST_F(MipmappedImagesTest, SixteenBitFilesStoreTheDisplayEncodingAsEightBitOnesDo) {
+    // the same grey, 128 of 255, in an 8-bit and a 16-bit PNG
+    Image grey(2, 2);
+    for (float& value : grey.rgb) value = decodeSrgb8(128);
+    const std::filesystem::path eight = folder / "grey8.png", sixteen = folder / "grey16.png";
+    writeImage(eight, grey);
+    auto out = OIIO::ImageOutput::create(sixteen.string());
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(2, 2, 1, OIIO::TypeDesc::UINT16);
+    ASSERT_TRUE(out->open(sixteen.string(), spec));
+    const std::vector<std::uint16_t> stored(4, 128 * 257);
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT16, stored.data()));
+    out->close();
+    EXPECT_FLOAT_EQ(readImage(eight).rgb[0], decodeSrgb8(128));
+    EXPECT_NEAR(readImage(sixteen).rgb[0], decodeSrgb8(128), 1e-6);
+    // as data (a bump map's heights) both are the fraction stored
+    EXPECT_FLOAT_EQ(readImage(eight, kMaxImageFilePixels, PixelValues::Data).rgb[0], 128.0f / 255.0f);
+    EXPECT_NEAR(readImage(sixteen, kMaxImageFilePixels, PixelValues::Data).rgb[0], 128.0f / 255.0f, 1e-6);
+    // and an EXR's floats are linear either way
+    const std::filesystem::path linear = folder / "grey.exr";
+    writeImage(linear, grey);
+    EXPECT_FLOAT_EQ(readImage(linear, kMaxImageFilePixels, PixelValues::Data).rgb[0], decodeSrgb8(128));
+    // the cache keeps the two readings apart
+    EXPECT_NE(cachedMipmappedImages({eight}, 4)->texels[0].x,
+              cachedMipmappedImages({eight}, 4, PixelValues::Data)->texels[0].x);
 }
 
 TEST(EnvironmentPlaceholder, IsAMarkedCheckerboardPerImage) {

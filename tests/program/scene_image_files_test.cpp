@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/encoding.h"
 #include "image/image_io.h"
 #include "program/compile_scene.h"
 #include "program/scene_images.h"
@@ -160,6 +161,39 @@ TEST(TextureFiles, AnImageBumpMapIsAFileOfItsMaterialToo) {
     EXPECT_EQ(s.materials[1].bumpImage, "../scenes/tutorial/heights/bricks.png");
 }
 
+TEST(TextureFiles, ABumpMapsHeightsAreReadAsStoredAndItsTextureAsColour) {
+    // one grey file, 128 of 255, as one material's texture and bump map
+    sdfwb::test::ScratchFolder folder;
+    image::Image grey(4, 4);
+    for (float& value : grey.rgb) value = image::decodeSrgb8(128);
+    image::writeImage(folder / "grey.png", grey);
+    scene::Scene s;
+    s.directory.path = folder.path().string();
+    scene::Material m;
+    m.name = "both";
+    m.texture = scene::TexturePattern::Image;
+    m.textureImage = "grey.png";
+    m.bump = scene::BumpPattern::Image;
+    m.bumpImage = "grey.png";
+    s.materials.push_back(m);
+    scene::Node ball = scene::Node::make(scene::NodeKind::Sphere);
+    ball.set("material", std::string("both"));
+    s.root.children.push_back(ball);
+    Program p = compileScene(s);
+    ASSERT_EQ(p.textureFiles.size(), 2u);  // the file once for each way it is read
+    EXPECT_EQ(p.textureFiles[0].path, p.textureFiles[1].path);
+    EXPECT_FALSE(p.textureFiles[0].heights);
+    EXPECT_TRUE(p.textureFiles[1].heights);
+    ResolvedImages images = resolveImages(p);
+    ASSERT_EQ(images.textures.size(), 2u);
+    EXPECT_FLOAT_EQ(images.textures[0]->texels[0].x, image::decodeSrgb8(128));  // about 0.216
+    EXPECT_FLOAT_EQ(images.textures[1]->texels[0].x, 128.0f / 255.0f);          // half way up
+    // its thumbnail shows the file's grey as stored
+    const image::Image thumbnail = sceneImagePreviews(s, 4).at("materials[0].bump_image");
+    EXPECT_EQ(image::encodeSrgb8(thumbnail.rgb[0]), 128);
+    EXPECT_TRUE(textureProblems(s).empty());
+}
+
 TEST(TextureFiles, MovingTheSceneRebasesTheTexturesToo) {
     scene::Scene s = texturedIn("/scenes/tutorial");
     moveSceneDirectory(s, "/elsewhere");
@@ -207,6 +241,11 @@ TEST(TextureFiles, ASceneNamesAtMostSixteenImages) {
     EXPECT_TRUE(scene::validateScene(s).empty());
     s.materials.back().bump = scene::BumpPattern::Image;  // a bump map's file counts too
     s.materials.back().bumpImage = "heights.png";
+    problems = scene::validateScene(s);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].find("materials[16].bump_image"), std::string::npos) << problems[0];
+    // a texture's file as a bump map is read a second way: a second image
+    s.materials.back().bumpImage = "image0.png";
     problems = scene::validateScene(s);
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_NE(problems[0].find("materials[16].bump_image"), std::string::npos) << problems[0];
