@@ -51,6 +51,20 @@ Polynomial reduce(const Polynomial& f, const std::vector<Polynomial>& divisors) 
 
 std::optional<Polynomial> divideExact(const Polynomial& f, const Polynomial& g) {
   if (g.isZero()) throw std::domain_error("divide_exact: division by zero");
+  if (g.termCount() == 1) {
+    // By a term, term by term in one pass (the general division merges the
+    // whole rest of f at each of its steps: a 3000-term numerator divided by
+    // z^24, one z at a time, took a second). Dividing every monomial by the
+    // same one keeps their order.
+    const Term divisor = g.leadingTerm();
+    std::vector<Term> terms;
+    terms.reserve(f.termCount());
+    for (const Term& t : f.terms()) {
+      if (!divisor.monomial.divides(t.monomial)) return std::nullopt;
+      terms.push_back(Term{t.monomial / divisor.monomial, t.coefficient / divisor.coefficient});
+    }
+    return Polynomial(f.ring(), std::move(terms));
+  }
   DivisionResult r = divide(f, {g});
   if (!r.remainder.isZero()) return std::nullopt;
   return std::move(r.quotients.front());
