@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <fstream>
 
+#include "io/quoted_text.h"
+
 namespace sdfwb::image {
 namespace {
 
@@ -51,7 +53,7 @@ std::string exrHeaderProblem(const std::filesystem::path& path) {
         const std::uint32_t bytes = littleEndian32(size);
         const std::uintmax_t position = static_cast<std::uintmax_t>(in.tellg());
         if (bytes > 0x7fffffffu || bytes > fileSize - position) {
-            return "its OpenEXR header attribute \"" + name + "\" claims " +
+            return "its OpenEXR header attribute " + io::quoted(name) + " claims " +
                    std::to_string(static_cast<std::int32_t>(bytes)) + " bytes, past the file's end (" +
                    std::to_string(fileSize) + " bytes)";
         }

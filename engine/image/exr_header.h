@@ -11,7 +11,8 @@
 namespace sdfwb::image {
 
 // "" when `path` is not an OpenEXR file (no magic number) or every attribute
-// of its headers fits in the file; otherwise what is wrong, for example
+// of its headers fits in the file; otherwise what is wrong (the attribute's
+// name quoted: it is the file's bytes), for example
 // "its OpenEXR header attribute \"comments\" claims 1929380159 bytes, past the
 // file's end (1269 bytes)".
 std::string exrHeaderProblem(const std::filesystem::path& path);
