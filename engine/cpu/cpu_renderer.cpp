@@ -5,11 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include "cpu/interpreter.h"
+#include "jobs/parallel_for.h"
 
 namespace sdfwb::cpu {
 
@@ -73,11 +70,7 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
         if (control.progress) control.progress(done, tilesTotal);
     };
 
-    tbb::parallel_for(tbb::blocked_range<int>(0, tilesTotal, 1),
-                      [&](const tbb::blocked_range<int>& range) {
-                          for (int t = range.begin(); t != range.end(); ++t) renderTile(tiles[t]);
-                      },
-                      tbb::simple_partitioner());
+    jobs::parallelFor(tilesTotal, [&](int t) { renderTile(tiles[t]); });
     return !cancelled.load();
 }
 
@@ -85,16 +78,15 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
 
 bool renderCpuTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
                     const std::function<void(const render::TileRect&)>& onTile) {
-    // The whole render in one arena of the caller's thread count: the tiles and
-    // the pruning grid the kernel builds first (its own parallel loop) alike.
-    int threads = control.threads > 0 ? control.threads : tbb::this_task_arena::max_concurrency();
-    tbb::task_arena arena(threads);
-    return arena.execute([&] {
-        if (control.precision == render::Precision::Double) {
-            return renderTiles<f64::Kernel>(program, control, frame, onTile);
-        }
-        return renderTiles<f32::Kernel>(program, control, frame, onTile);
+    // The whole render on the caller's thread count: the tiles and the pruning
+    // grid the kernel builds first (its own parallel loop) alike.
+    bool finished = false;
+    jobs::withThreads(control.threads, [&] {
+        finished = control.precision == render::Precision::Double
+                       ? renderTiles<f64::Kernel>(program, control, frame, onTile)
+                       : renderTiles<f32::Kernel>(program, control, frame, onTile);
     });
+    return finished;
 }
 
 render::RenderOutcome renderCpu(const program::Program& program, const render::RenderControl& control) {

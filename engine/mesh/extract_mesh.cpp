@@ -7,9 +7,9 @@
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/VolumeToMesh.h>
-#include <tbb/parallel_for.h>
 
 #include "cpu/interpreter.h"
+#include "jobs/parallel_for.h"
 #include "program/compile_scene.h"
 #include "scene/camera_frame.h"
 
@@ -81,7 +81,7 @@ Mesh extractMesh(const scene::Scene& scene, int resolution, const MeshControl& c
     std::vector<BlockSamples> slab(static_cast<size_t>(slabBlocks));
     for (int bz = 0; bz < g.blocks.z; ++bz) {
         if (control.cancel && control.cancel->load()) throw MeshCancelled();
-        tbb::parallel_for(0, slabBlocks, [&](int index) {
+        jobs::parallelFor(slabBlocks, [&](int index) {
             const glm::ivec3 base(index % g.blocks.x * kBlock, index / g.blocks.x * kBlock, bz * kBlock);
             cpu::f32::Scratch scratch(program);
             auto field = [&](glm::dvec3 p) { return static_cast<float>(kernel.map(scratch, cpu::f32::vec3(p)).d); };

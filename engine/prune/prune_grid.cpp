@@ -10,9 +10,8 @@
 #include <optional>
 #include <set>
 
-#include <tbb/parallel_for.h>
-
 #include "jobs/job_queue.h"
+#include "jobs/parallel_for.h"
 #include "prune/cell_pruning.h"
 #include "sdf/shared.h"
 
@@ -196,7 +195,7 @@ std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program,
     std::vector<LocalTree> trees(static_cast<size_t>(roots));
     CodeSpan full{program.code, program.result};
     Builder builder(program);
-    tbb::parallel_for(0, roots, [&](int i) {
+    jobs::parallelFor(roots, [&](int i) {
         glm::ivec3 cell(i % grid->dims.x, (i / grid->dims.x) % grid->dims.y, i / (grid->dims.x * grid->dims.y));
         builder.buildRoot(trees[static_cast<size_t>(i)], full, lo + glm::dvec3(cell) * grid->cellSize, grid->cellSize);
     });

@@ -1,0 +1,81 @@
+#include "jobs/parallel_for.h"
+
+#ifdef SDFWB_PLAIN_THREADS
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+#else
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+namespace sdfwb::jobs {
+
+#ifdef SDFWB_PLAIN_THREADS
+
+namespace {
+thread_local int threadLimit = 0;  // set by withThreads; inherited by the loop's threads
+
+struct ThreadLimitScope {
+    explicit ThreadLimitScope(int limit) : outer(threadLimit) { threadLimit = limit; }
+    ~ThreadLimitScope() { threadLimit = outer; }
+    int outer;
+};
+}  // namespace
+
+int defaultThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+void parallelFor(int count, const std::function<void(int)>& body) {
+    const int limit = threadLimit > 0 ? threadLimit : defaultThreads();
+    const int threads = std::min(limit, count);
+    std::atomic<int> next{0};
+    std::mutex failureMutex;
+    std::exception_ptr failure;  // the first exception a body threw, rethrown here as oneTBB does
+    auto run = [&] {
+        ThreadLimitScope scope(limit);
+        try {
+            for (int i = next++; i < count; i = next++) body(i);
+        } catch (...) {
+            next = count;
+            std::lock_guard lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+        }
+    };
+    std::vector<std::thread> helpers;
+    for (int t = 1; t < threads; ++t) helpers.emplace_back(run);
+    if (threads > 0) run();
+    for (std::thread& helper : helpers) helper.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+void withThreads(int threads, const std::function<void()>& work) {
+    ThreadLimitScope scope(threads > 0 ? threads : defaultThreads());
+    work();
+}
+
+#else
+
+int defaultThreads() { return tbb::this_task_arena::max_concurrency(); }
+
+void parallelFor(int count, const std::function<void(int)>& body) {
+    // One index per task: tiles and grid cells differ widely in cost.
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, count, 1),
+        [&](const tbb::blocked_range<int>& range) {
+            for (int i = range.begin(); i != range.end(); ++i) body(i);
+        },
+        tbb::simple_partitioner());
+}
+
+void withThreads(int threads, const std::function<void()>& work) {
+    tbb::task_arena arena(threads > 0 ? threads : defaultThreads());
+    arena.execute(work);
+}
+
+#endif
+
+}  // namespace sdfwb::jobs
