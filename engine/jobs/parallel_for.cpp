@@ -18,25 +18,37 @@ namespace sdfwb::jobs {
 #ifdef SDFWB_PLAIN_THREADS
 
 namespace {
-thread_local int threadLimit = 0;  // set by withThreads; inherited by the loop's threads
+thread_local int threadLimit = 0;  // set by withThreads
+thread_local bool inLoop = false;  // the thread runs a parallelFor body
 
 struct ThreadLimitScope {
     explicit ThreadLimitScope(int limit) : outer(threadLimit) { threadLimit = limit; }
     ~ThreadLimitScope() { threadLimit = outer; }
     int outer;
 };
+
+struct InLoopScope {
+    InLoopScope() : outer(inLoop) { inLoop = true; }
+    ~InLoopScope() { inLoop = outer; }
+    bool outer;
+};
 }  // namespace
 
 int defaultThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
 void parallelFor(int count, const std::function<void(int)>& body) {
+    if (inLoop) {
+        // The outer loop already runs on every thread the limit allows.
+        for (int i = 0; i < count; ++i) body(i);
+        return;
+    }
     const int limit = threadLimit > 0 ? threadLimit : defaultThreads();
     const int threads = std::min(limit, count);
     std::atomic<int> next{0};
     std::mutex failureMutex;
     std::exception_ptr failure;  // the first exception a body threw, rethrown here as oneTBB does
     auto run = [&] {
-        ThreadLimitScope scope(limit);
+        InLoopScope scope;
         try {
             for (int i = next++; i < count; i = next++) body(i);
         } catch (...) {

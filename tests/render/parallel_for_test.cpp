@@ -44,7 +44,6 @@ TEST(ParallelFor, OneThreadRunsEverythingNestedOrNotOnTheCallingThread) {
     EXPECT_EQ(elsewhere.load(), 0);
 }
 
-// (On a machine of more than two threads; on two it holds trivially.)
 TEST(ParallelFor, ALoopInsideALimitedLoopKeepsTheLimit) {
     std::mutex idsMutex;
     std::set<std::thread::id> ids;
