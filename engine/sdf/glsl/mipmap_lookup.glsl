@@ -33,8 +33,14 @@ SHARED_FN vec3 sampleLevel(int start, int size, real u, real v, bool wrapU, bool
 }
 
 // The notes' mipmap access: level lod (0 the full image, fractional between
-// two levels), interpolated linearly between the two nearest levels.
+// two levels), interpolated linearly between the two nearest levels. An image
+// that was not read (no levels: picking and point queries read no texels) is
+// white, which leaves what it multiplies as it is (and keeps the level shifts
+// below from going negative, undefined in GLSL and C++).
 SHARED_FN vec3 sampleMipmap(int start, int side, int levels, real u, real v, real lod, bool wrapU, bool wrapV) {
+    if (levels < 1) {
+        return vec3(real(1));
+    }
     real level = clamp(lod, real(0), real(levels - 1));
     int fine = int(floor(level));
     int coarse = min(fine + 1, levels - 1);
