@@ -25,7 +25,9 @@ namespace sdfwb::ui {
 
 class FreeSpace {
 public:
+    // Keeps a reference to the scene, which must outlive it (so no temporary).
     explicit FreeSpace(const scene::Scene& scene);
+    explicit FreeSpace(const scene::Scene&& scene) = delete;
 
     // Whether the box of half extents `half` centred at `centre` overlaps no
     // drawn geometry: bounds may touch it (up to rounding), the sampled field

@@ -279,7 +279,8 @@ TEST(Placement, WithNoRoomAnywhereTheSearchStopsAtItsBudget) {
 }
 
 TEST(Placement, FreeSpaceSeesTheObjectsApartNotTheirUnion) {
-    FreeSpace space(defaultScene());
+    const scene::Scene scene = defaultScene();
+    FreeSpace space(scene);
     ASSERT_EQ(space.obstacles().size(), 2u);  // the ball and the crate, not one box around both
     EXPECT_FALSE(space.hasUnbounded());
     EXPECT_TRUE(space.isClear(glm::dvec3(0, 3, 0), glm::dvec3(0.5)));                           // above them
