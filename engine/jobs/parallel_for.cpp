@@ -21,16 +21,18 @@ namespace {
 thread_local int threadLimit = 0;  // set by withThreads
 thread_local bool inLoop = false;  // the thread runs a parallelFor body
 
-struct ThreadLimitScope {
-    explicit ThreadLimitScope(int limit) : outer(threadLimit) { threadLimit = limit; }
-    ~ThreadLimitScope() { threadLimit = outer; }
-    int outer;
-};
+// Gives a thread_local a value for a scope, then its outer value back.
+template <typename T>
+class ScopedValue {
+public:
+    ScopedValue(T& variable, T value) : variable_(variable), outer_(variable) { variable_ = value; }
+    ~ScopedValue() { variable_ = outer_; }
+    ScopedValue(const ScopedValue&) = delete;
+    ScopedValue& operator=(const ScopedValue&) = delete;
 
-struct InLoopScope {
-    InLoopScope() : outer(inLoop) { inLoop = true; }
-    ~InLoopScope() { inLoop = outer; }
-    bool outer;
+private:
+    T& variable_;
+    T outer_;
 };
 }  // namespace
 
@@ -48,7 +50,7 @@ void parallelFor(int count, const std::function<void(int)>& body) {
     std::mutex failureMutex;
     std::exception_ptr failure;  // the first exception a body threw, rethrown here as oneTBB does
     auto run = [&] {
-        InLoopScope scope;
+        ScopedValue<bool> scope(inLoop, true);
         try {
             for (int i = next++; i < count; i = next++) body(i);
         } catch (...) {
@@ -65,7 +67,7 @@ void parallelFor(int count, const std::function<void(int)>& body) {
 }
 
 void withThreads(int threads, const std::function<void()>& work) {
-    ThreadLimitScope scope(threads > 0 ? threads : defaultThreads());
+    ScopedValue<int> scope(threadLimit, threads > 0 ? threads : defaultThreads());
     work();
 }
 
