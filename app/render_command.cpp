@@ -1,10 +1,8 @@
 #include "app/render_command.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "app/command_errors.h"
 #include "app/memory_check.h"
@@ -15,6 +13,7 @@
 #include "app/backend.h"
 #include "image/image_io.h"
 #include "io/atomic_file.h"
+#include "jobs/parallel_for.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
 
@@ -24,7 +23,7 @@ namespace {
 // More threads than the machine has only add overhead; say so rather than
 // silently use fewer. 0 stays 0 (all hardware threads).
 int clampedThreads(int requested) {
-    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int hardware = jobs::defaultThreads();
     if (requested > hardware) {
         std::fprintf(stderr, "sdf-workbench render: --threads %d: this machine runs %d threads at once; using %d\n",
                      requested, hardware, hardware);
