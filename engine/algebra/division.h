@@ -24,7 +24,9 @@ DivisionResult divide(const Polynomial& f, const std::vector<Polynomial>& diviso
 /// The remainder of divide(f, divisors) without the quotients.
 Polynomial reduce(const Polynomial& f, const std::vector<Polynomial>& divisors);
 
-/// f / g when g divides f exactly, std::nullopt otherwise. g must be nonzero.
+/// f / g when g divides f exactly, std::nullopt otherwise (through FLINT,
+/// which stops at the first term that cannot divide). g must be nonzero; both
+/// in one ring (std::invalid_argument otherwise).
 std::optional<Polynomial> divideExact(const Polynomial& f, const Polynomial& g);
 
 }  // namespace sdfwb::algebra
