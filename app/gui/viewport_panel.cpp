@@ -124,7 +124,7 @@ void statsOverlay(AppState& app, ImVec2 corner) {
                   s.gpuSeconds * 1000.0),
         formatted("steps/pixel mean %.1f, max %.0f, hits %.0f%%", s.frame.meanSteps, s.frame.maxSteps,
                   s.frame.hitRatio * 100.0),
-        formatted("field evaluations/pixel mean %.1f (march, normals, AO, shadows)", s.frame.meanEvaluations),
+        formatted("field evaluations/pixel mean %.1f (march, normals, material, AO, shadows)", s.frame.meanEvaluations),
         "GL " + viewport.glInfo().renderer,
         formatted("shaders built %d, last %.2f s", s.compiles, s.compileSeconds),
         s.status,

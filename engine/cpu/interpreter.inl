@@ -7,14 +7,23 @@ inline Material materialAtSlot(const vec4* params, int slot) {
                              params[slot + 5]);
 }
 
+// A sample register of an evaluation that reads distances only.
+struct Distances {
+    real d;
+    real step;
+};
+
 // Per-thread working memory of one program: register files and formula evaluators.
 struct Scratch {
     std::vector<vec3> points;
     std::vector<Sample> samples;
+    std::vector<Distances> distances;
     std::vector<expr::Evaluator<real>> formulas;
 
     explicit Scratch(const program::Program& program)
-        : points(static_cast<size_t>(program.pointRegisters)), samples(static_cast<size_t>(program.sampleRegisters)) {
+        : points(static_cast<size_t>(program.pointRegisters)),
+          samples(static_cast<size_t>(program.sampleRegisters)),
+          distances(static_cast<size_t>(program.sampleRegisters)) {
         for (const program::FormulaCode& formula : program.formulas) {
             formulas.emplace_back(formula.tape);
         }
@@ -70,86 +79,115 @@ inline Sample instTriplanarTexture(Texels texels, Args... args) {
     return texels.instTriplanarTexture(args...);
 }
 
+// The sample registers of an evaluation that carries materials.
+struct MaterialSamples {
+    Sample* registers;
+    const vec4* params;
+
+    Sample get(int i) const { return registers[i]; }
+    void set(int i, Sample s) const { registers[i] = s; }
+    Material material(int slot) const { return materialAtSlot(params, slot); }
+};
+
+// The sample registers of an evaluation that reads distances only
+// (traceNeedsMaterial): the same shared functions run on samples whose
+// material is a constant, and with nothing storing the materials they
+// compute, the compiler drops that work (material mixes, textures).
+struct DistanceSamples {
+    Distances* registers;
+
+    Sample get(int i) const { return Sample(registers[i].d, registers[i].step, noMaterial()); }
+    void set(int i, Sample s) const { registers[i] = Distances{s.d, s.step}; }
+    Material material(int) const { return noMaterial(); }
+};
+
 // The register files and constants one instruction reads.
+template <typename Samples>
 struct Registers {
     vec3* points;
-    Sample* samples;
-    const vec4* params;
+    Samples samples;
     Scratch& scratch;
     Texels texels;  // a pointer's worth: the shared functions are not const members
 };
 
 // One function per operand class (program/opcodes.h), so each opcode's wiring
 // follows from its class in the opcode table, as the GLSL generator's does.
-template <int Slots, typename F>
-inline void runPoint(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+template <int Slots, typename F, typename R>
+inline void runPoint(F fn, const program::Instruction& in, const vec4* q, R& r) {
     r.points[in.dst] = withSlots<Slots>(q, [&](auto... s) { return fn(r.points[in.a], s...); });
 }
-template <int Slots, typename F>
-inline void runShape(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+template <int Slots, typename F, typename R>
+inline void runShape(F fn, const program::Instruction& in, const vec4* q, R& r) {
     real d = withSlots<Slots>(q, [&](auto... s) { return fn(r.points[in.a], s...); });
-    r.samples[in.dst] = shapeSample(d, materialAtSlot(r.params, in.material));
+    r.samples.set(in.dst, shapeSample(d, r.samples.material(in.material)));
 }
-template <int Slots, typename F>
-inline void runShapeSample(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
-    r.samples[in.dst] = withSlots<Slots>(
-        q, [&](auto... s) { return fn(r.points[in.a], s..., materialAtSlot(r.params, in.material)); });
+template <int Slots, typename F, typename R>
+inline void runShapeSample(F fn, const program::Instruction& in, const vec4* q, R& r) {
+    r.samples.set(in.dst, withSlots<Slots>(
+                              q, [&](auto... s) { return fn(r.points[in.a], s..., r.samples.material(in.material)); }));
 }
-template <int Slots, typename F>
-inline void runFormulaShape(F fn, const program::Instruction& in, const vec4*, Registers& r) {
+template <int Slots, typename F, typename R>
+inline void runFormulaShape(F fn, const program::Instruction& in, const vec4*, R& r) {
     static_assert(Slots == 0, "a formula shape reads only its formula");
-    r.samples[in.dst] = shapeSample(fn(r.scratch.formula(in.variant, r.points[in.a])[0]),
-                                    materialAtSlot(r.params, in.material));
+    r.samples.set(in.dst,
+                  shapeSample(fn(r.scratch.formula(in.variant, r.points[in.a])[0]), r.samples.material(in.material)));
 }
-template <int Slots, typename F>
-inline void runFormulaSample(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+template <int Slots, typename F, typename R>
+inline void runFormulaSample(F fn, const program::Instruction& in, const vec4* q, R& r) {
     std::span<const real> v = r.scratch.formula(in.variant, r.points[in.a]);
     vec4 value(v[0], v[1], v[2], v[3]);
-    r.samples[in.dst] = withSlots<Slots>(
-        q, [&](auto... s) { return fn(r.points[in.a], value, s..., materialAtSlot(r.params, in.material)); });
+    r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
+                      return fn(r.points[in.a], value, s..., r.samples.material(in.material));
+                  }));
 }
-template <int Slots, typename F>
-inline void runCombine(F fn, const program::Instruction& in, const vec4*, Registers& r) {
+template <int Slots, typename F, typename R>
+inline void runCombine(F fn, const program::Instruction& in, const vec4*, R& r) {
     static_assert(Slots == 0, "a hard boolean has no parameters");
-    r.samples[in.dst] = fn(r.samples[in.a], r.samples[in.b]);
+    r.samples.set(in.dst, fn(r.samples.get(in.a), r.samples.get(in.b)));
 }
-template <int Slots, typename F>
-inline void runSmoothCombine(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
-    r.samples[in.dst] =
-        withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.samples[in.b], s..., in.variant); });
+template <int Slots, typename F, typename R>
+inline void runSmoothCombine(F fn, const program::Instruction& in, const vec4* q, R& r) {
+    r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
+                      return fn(r.samples.get(in.a), r.samples.get(in.b), s..., in.variant);
+                  }));
 }
-template <int Slots, typename F>
-inline void runPost(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
-    r.samples[in.dst] = withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.points[in.b], s...); });
+template <int Slots, typename F, typename R>
+inline void runPost(F fn, const program::Instruction& in, const vec4* q, R& r) {
+    r.samples.set(in.dst,
+                  withSlots<Slots>(q, [&](auto... s) { return fn(r.samples.get(in.a), r.points[in.b], s...); }));
 }
-template <int Slots, typename F>
-inline void runTexture(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
-    r.samples[in.dst] =
-        withSlots<Slots>(q, [&](auto... s) { return fn(r.samples[in.a], r.points[in.b], r.points[0], s...); });
+template <int Slots, typename F, typename R>
+inline void runTexture(F fn, const program::Instruction& in, const vec4* q, R& r) {
+    r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
+                      return fn(r.samples.get(in.a), r.points[in.b], r.points[0], s...);
+                  }));
 }
-template <int Slots, typename F>
-inline void runImageTexture(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
-    r.samples[in.dst] = withSlots<Slots>(
-        q, [&](auto... s) { return fn(r.texels, r.samples[in.a], r.points[in.b], r.points[0], s...); });
+template <int Slots, typename F, typename R>
+inline void runImageTexture(F fn, const program::Instruction& in, const vec4* q, R& r) {
+    r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
+                      return fn(r.texels, r.samples.get(in.a), r.points[in.b], r.points[0], s...);
+                  }));
 }
-template <int Slots, typename F>
-inline void runFormulaImageTexture(F fn, const program::Instruction& in, const vec4* q, Registers& r) {
+template <int Slots, typename F, typename R>
+inline void runFormulaImageTexture(F fn, const program::Instruction& in, const vec4* q, R& r) {
     std::span<const real> v = r.scratch.formula(in.variant, r.points[in.b]);
     vec4 value(v[0], v[1], v[2], v[3]);
-    r.samples[in.dst] = withSlots<Slots>(
-        q, [&](auto... s) { return fn(r.texels, r.samples[in.a], r.points[in.b], r.points[0], value, s...); });
+    r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
+                      return fn(r.texels, r.samples.get(in.a), r.points[in.b], r.points[0], value, s...);
+                  }));
 }
-template <int Slots, typename F>
-inline void runConstant(F fn, const program::Instruction& in, const vec4*, Registers& r) {
-    r.samples[in.dst] = fn(materialAtSlot(r.params, MATERIAL_SLOT));
+template <int Slots, typename F, typename R>
+inline void runConstant(F fn, const program::Instruction& in, const vec4*, R& r) {
+    r.samples.set(in.dst, fn(r.samples.material(MATERIAL_SLOT)));
 }
 
 // Runs `code` (the program's instructions, or a pruned list of them) on
-// `point` and returns sample register `result`. The switch is expanded from
-// the opcode table, one case per opcode.
-inline Sample runCode(std::span<const program::Instruction> code, int result, const vec4* params, Scratch& scratch,
-                      vec3 point, const Texels& texels = Texels{}) {
-    Registers r{scratch.points.data(), scratch.samples.data(), params, scratch, texels};
+// `point` into the sample registers `samples` and returns register `result`.
+// The switch is expanded from the opcode table, one case per opcode.
+template <typename Samples>
+inline Sample runCodeOn(Samples samples, std::span<const program::Instruction> code, int result, const vec4* params,
+                        Scratch& scratch, vec3 point, const Texels& texels) {
+    Registers<Samples> r{scratch.points.data(), samples, scratch, texels};
     r.points[0] = point;
     for (const program::Instruction& in : code) {
         const vec4* q = in.param >= 0 ? params + in.param : nullptr;
@@ -162,7 +200,17 @@ inline Sample runCode(std::span<const program::Instruction> code, int result, co
 #undef SDFWB_OPCODE_CASE
         }
     }
-    return r.samples[result];
+    return r.samples.get(result);
+}
+
+// `code` on `point`, with materials, or read for its distances only: then
+// the sample's material is noMaterial().
+inline Sample runCode(std::span<const program::Instruction> code, int result, const vec4* params, Scratch& scratch,
+                      vec3 point, const Texels& texels = Texels{}, bool withMaterial = true) {
+    if (withMaterial) {
+        return runCodeOn(MaterialSamples{scratch.samples.data(), params}, code, result, params, scratch, point, texels);
+    }
+    return runCodeOn(DistanceSamples{scratch.distances.data()}, code, result, params, scratch, point, texels);
 }
 
 // The scene's distance field: runs the program's instructions on `point`.
@@ -173,13 +221,13 @@ inline Sample mapProgram(const program::Program& program, const vec4* params, Sc
 // The field at `point`: the pruned instructions of the point's cell when the
 // program has a grid (engine/prune), else the whole program.
 inline Sample fieldAt(const program::Program& program, const prune::PruneGrid* grid, const vec4* params,
-                      Scratch& scratch, vec3 point, const Texels& texels = Texels{}) {
+                      Scratch& scratch, vec3 point, const Texels& texels = Texels{}, bool withMaterial = true) {
     if (grid == nullptr) {
-        return runCode(program.code, program.result, params, scratch, point, texels);
+        return runCode(program.code, program.result, params, scratch, point, texels, withMaterial);
     }
     const prune::PruneLeaf& leaf = grid->leaves[static_cast<size_t>(prune::leafIndexAt(*grid, point))];
     std::span<const program::Instruction> code(grid->code.data() + leaf.offset, static_cast<size_t>(leaf.count));
-    return runCode(code, leaf.result, params, scratch, point, texels);
+    return runCode(code, leaf.result, params, scratch, point, texels, withMaterial);
 }
 
 struct SampleResult {
@@ -197,14 +245,17 @@ struct SampleDriver : Texels {
     const prune::PruneGrid* grid;
     const vec4* params;
     Scratch& scratch;
+    bool distancesOnlyAllowed;  // no phase but the material phase reads materials (Kernel)
+    bool withMaterial = true;
 
     vec4 P(int slot) const { return params[slot]; }
-    Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p, *this); }
+    Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p, *this, withMaterial); }
     bool secondaryRays() const { return program.secondaryRays; }
     bool environmentMap() const { return images != nullptr && images->environment != nullptr; }
     bool imageTextures() const { return !program.textureFiles.empty(); }
-    int textureSamplesPerHit() const { return program.textureSamplesPerHit(); }
+    int materialSamplesPerHit() const { return program.materialSamplesPerHit(); }
     void setTextureStretch(real k) { textureStretch = k; }
+    void setMaterialNeeded(bool needed) { withMaterial = needed || !distancesOnlyAllowed; }
 
 #include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
@@ -229,9 +280,14 @@ struct Kernel {
     std::shared_ptr<const prune::PruneGrid> grid;
     std::vector<vec4> params;  // the program's, then the grid's
     program::ResolvedImages images;
+    // The tracer's evaluations outside its material phase may leave the
+    // materials out: they read none in this scene (Program::marchReadsMaterials).
+    bool distancesOnly;
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
-        : program(p), grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr) {
+        : program(p),
+          grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr),
+          distancesOnly(p.distanceOnlyMarch && !p.marchReadsMaterials()) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }
@@ -254,7 +310,7 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch}.traceSample(
+        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch, distancesOnly}.traceSample(
             px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }

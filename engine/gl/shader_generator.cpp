@@ -226,7 +226,10 @@ std::string generateFragmentShader(const program::Program& program) {
         << "\nbool secondaryRays() { return " << (program.secondaryRays ? "true" : "false") << "; }\n"
         << "bool environmentMap() { return " << (environmentMap ? "true" : "false") << "; }\n"
         << "bool imageTextures() { return " << (program.textureFiles.empty() ? "false" : "true") << "; }\n"
-        << "int textureSamplesPerHit() { return " << program.textureSamplesPerHit() << "; }\n"
+        << "int materialSamplesPerHit() { return " << program.materialSamplesPerHit() << "; }\n"
+        // every map() carries the material: llvmpipe would run a branch that
+        // leaves it out on every lane anyway (docs/toolchain-notes.md)
+        << "void setMaterialNeeded(bool needed) {}\n"
         << sdf::glslEnvironmentLookup() << sdf::glslSampleDriver() << kMain;
     return out.str();
 }

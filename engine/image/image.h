@@ -20,7 +20,7 @@ struct Image {
 struct Frame {
     Image color;
     std::vector<float> steps;     // mean primary-march evaluations per sub-sample, per pixel
-    std::vector<float> evaluations;  // mean field evaluations of any kind (march, normal, AO, shadow) per sub-sample
+    std::vector<float> evaluations;  // mean field evaluations of any kind (march, normal, material, AO, shadow) per sub-sample
     std::vector<float> coverage;  // fraction of sub-samples that hit a surface, per pixel
     std::vector<float> depth;     // mean march distance t of the sub-samples that hit (0 where none did)
 };

@@ -90,6 +90,9 @@ struct Program {
     glm::dvec3 rootMin{0.0};
     glm::dvec3 rootMax{0.0};
     bool prune = true;  // debug switch: false evaluates the whole program everywhere
+    // debug switch: false makes the CPU backend carry materials through every
+    // evaluation, not only the material phase's (cpu/interpreter.inl)
+    bool distanceOnlyMarch = true;
 
     CameraParams camera;
     TraceParams trace;
@@ -122,12 +125,18 @@ struct Program {
     };
     std::vector<TextureFile> textureFiles;
     std::vector<TextureSlot> textureSlots;
-    // Some material's bump map is an image: the tracer's texture phase takes
+    // Some material's bump map is an image: the tracer's material phase takes
     // four samples of its own around each hit to differentiate it. Structural.
     bool imageBumps = false;
-    // Evaluations of the texture phase per hit (sdf/glsl/tracer.glsl): 0
-    // without image textures, 1 for their colour, 5 with an image bump map.
-    int textureSamplesPerHit() const;
+    // Evaluations of the material phase per hit (sdf/glsl/tracer.glsl): 1,
+    // the hit's material, or 5 with an image bump map.
+    int materialSamplesPerHit() const;
+    // Whether the tracer's evaluations outside the material phase read
+    // materials (sdf/glsl/tracer.glsl, traceNeedsMaterial): some material
+    // transmits (shadows, an eye inside glass read the transparency) or
+    // there is a procedural bump map (the normal reads the height). If not,
+    // a backend may evaluate them for their distances only.
+    bool marchReadsMaterials() const;
     int width = 0;
     int height = 0;
     int aa = 1;

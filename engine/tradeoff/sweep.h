@@ -54,7 +54,7 @@ struct Measurement {
     std::vector<double> repetitionSeconds;
     double meanSteps = 0;  // primary-march evaluations per pixel (per sub-sample, averaged)
     double maxSteps = 0;
-    double meanEvaluations = 0;  // all field evaluations (march, normal, AO, shadow) per pixel, likewise
+    double meanEvaluations = 0;  // all field evaluations (march, normal, material, AO, shadow) per pixel, likewise
     FrameError error;
 };
 

@@ -58,15 +58,21 @@ program::Program compiled(int index, bool prune) {
 }
 
 // CPU render time per pixel, the grid built beforehand (a GUI reuses it
-// across progressive passes); range(1) = 1 pruned, 0 the whole program.
+// across progressive passes); range(1): 1 pruned, 0 the whole program, 2
+// pruned with materials carried through every evaluation (distance-only
+// evaluation off).
+enum CpuMode { kWhole = 0, kPruned = 1, kPrunedMaterials = 2 };
 void BM_Cpu(benchmark::State& state) {
-    program::Program p = compiled(static_cast<int>(state.range(0)), state.range(1) != 0);
+    const auto mode = static_cast<CpuMode>(state.range(1));
+    program::Program p = compiled(static_cast<int>(state.range(0)), mode != kWhole);
+    p.distanceOnlyMarch = mode != kPrunedMaterials;
     std::shared_ptr<const prune::PruneGrid> grid = prune::pruneGridFor(p);
     for (auto _ : state) {
         benchmark::DoNotOptimize(cpu::renderCpu(p));
     }
-    state.SetLabel(std::string(cases()[static_cast<size_t>(state.range(0))].name) + (state.range(1) ? " pruned" : " whole") +
-                   " " + std::to_string(p.code.size()) + " instructions");
+    const char* modeName = mode == kWhole ? " whole" : mode == kPruned ? " pruned" : " materials";
+    state.SetLabel(std::string(cases()[static_cast<size_t>(state.range(0))].name) + modeName + " " +
+                   std::to_string(p.code.size()) + " instructions");
     state.counters["s_per_px"] = benchmark::Counter(kWidth * kHeight, benchmark::Counter::kIsIterationInvariantRate |
                                                                           benchmark::Counter::kInvert);
 }
@@ -138,8 +144,9 @@ void BM_Gl(benchmark::State& state) {
 
 void cpuArgs(benchmark::internal::Benchmark* b) {
     for (int i = 0; i < static_cast<int>(cases().size()); ++i) {
-        b->Args({i, 1});
-        b->Args({i, 0});
+        b->Args({i, kPruned});
+        b->Args({i, kWhole});
+        b->Args({i, kPrunedMaterials});
     }
 }
 BENCHMARK(BM_Cpu)->Apply(cpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
@@ -163,9 +170,10 @@ public:
             auto cost = run.counters.find("s_per_px");
             if (run.error_occurred || cost == run.counters.end()) continue;
             std::string label = run.report_label, scene = label.substr(0, label.find(' '));
-            std::string mode = label.find(" pruned") != std::string::npos  ? " pruned"
-                               : label.find(" whole") != std::string::npos ? " whole"
-                                                                            : "";
+            std::string mode;
+            for (const char* name : {" pruned", " whole", " materials"}) {
+                if (label.find(name) != std::string::npos) mode = name;
+            }
             costs_[run.run_name.function_name + mode + " " + scene] = cost->second.value;
         }
     }
@@ -186,6 +194,11 @@ public:
                 std::printf("%-16s %-18s %12s %12s\n", backend, family.c_str(),
                             ratio(base + "100", base + "10").c_str(), ratio(base + large, base + "10").c_str());
             }
+        }
+        std::printf("\nCPU: materials at every evaluation / distance-only evaluation, per pixel\n");
+        for (const Case& c : cases()) {
+            std::printf("%-18s %12s\n", c.name,
+                        ratio(std::string("BM_Cpu materials ") + c.name, std::string("BM_Cpu pruned ") + c.name).c_str());
         }
         std::printf("\nCPU pruned / GL per pixel (GL's second render)\n");
         for (const char* scene : {"molecule_10", "molecule_100", "molecule_hard_10", "molecule_hard_100"}) {

@@ -39,6 +39,23 @@ TEST_P(EveryScene, WithoutMirrorsOrGlassRendersAsThroughTheRayTree) {
     EXPECT_EQ(without.frame.evaluations, with.frame.evaluations);
 }
 
+// The march, normal, AO and shadow evaluations of a scene whose materials
+// none of them reads carry distances only (cpu/interpreter.inl); the hit's
+// material comes from the material phase either way. Carrying materials
+// through every evaluation must change no bit of the image, its depths or
+// the evaluation counts.
+TEST_P(EveryScene, DistanceOnlyEvaluationsRenderAsWithMaterials) {
+    scene::Scene s = scene::loadSceneFile(GetParam().path());
+    program::Program p = program::compileScene(s, {.width = 48, .height = 27, .aa = 1});
+    program::Program materials = p;
+    materials.distanceOnlyMarch = false;
+    render::RenderOutcome distances = cpu::renderCpu(p), full = cpu::renderCpu(materials);
+    EXPECT_EQ(distances.frame.color.rgb, full.frame.color.rgb);
+    EXPECT_EQ(distances.frame.depth, full.frame.depth);
+    EXPECT_EQ(distances.frame.steps, full.frame.steps);
+    EXPECT_EQ(distances.frame.evaluations, full.frame.evaluations);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::allSceneFiles()),
                          [](const ::testing::TestParamInfo<test::SceneFile>& info) { return info.param.testName(); });
 

@@ -155,7 +155,7 @@ TEST_F(ImageTexture, AConstantHeightMapLeavesTheImageBitForBit) {
     bumped.materials[0].bump = scene::BumpPattern::Image;
     bumped.materials[0].bumpImage = "flat.png";
     bumped.materials[0].bumpDepth = 1.0;
-    EXPECT_EQ(program::compileScene(bumped).textureSamplesPerHit(), 5);
+    EXPECT_EQ(program::compileScene(bumped).materialSamplesPerHit(), 5);
     parity::ParityResult a = render(plain), b = render(bumped);
     EXPECT_TRUE(b.passes);
     EXPECT_EQ(a.cpuColor.rgb, b.cpuColor.rgb);

@@ -81,8 +81,9 @@ struct AnalyticDriver {
     bool secondaryRays() const { return true; }
     bool environmentMap() const { return !texels.empty(); }
     bool imageTextures() const { return false; }
-    int textureSamplesPerHit() const { return 0; }
+    int materialSamplesPerHit() const { return 1; }
     void setTextureStretch(real) {}
+    void setMaterialNeeded(bool) {}
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 
 #include "sdf/glsl/environment_lookup.glsl"

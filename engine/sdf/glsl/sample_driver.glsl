@@ -3,10 +3,11 @@
 // map(p), the scene's field, secondaryRays(), whether the scene has mirrors
 // or glass, environmentMap(), whether rays that leave the scene see an image
 // (environment_lookup.glsl, which reads T(i)), imageTextures(), whether
-// materials have image textures, textureSamplesPerHit(), how many
-// evaluations the texture phase takes (tracer.glsl's TraceState), and
-// setTextureStretch(k), which widens
-// the footprint of the next map()'s image textures (texture_lookup.glsl). GLSL: the
+// materials have image textures, materialSamplesPerHit(), how many
+// evaluations the material phase takes (tracer.glsl's TraceState),
+// setTextureStretch(k), which widens the footprint of the next map()'s image
+// textures (texture_lookup.glsl), and setMaterialNeeded(b), false when the
+// next map() is read for its distances (traceNeedsMaterial). GLSL: the
 // generated functions before it; C++: members of the struct this file is
 // included in (cpu/interpreter.inl).
 // One call site of map() (compile cost grows with call sites, see
@@ -41,7 +42,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     // and the spacing of image bump maps' samples
     real pixelAngle = real(2) * sceneCamera().tanHalfFov / height;
     TraceState s = traceBegin(cameraRay(sceneCamera(), px, py, width, height));
-    s.textureSamples = textureSamplesPerHit();
+    s.materialSamples = materialSamplesPerHit();
     s.pixelAngle = pixelAngle;
     Sample field = shapeSample(real(0), s.material);
     RayTree tree = rayTreeBegin();
@@ -52,6 +53,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
             if (imageTextures()) {
                 setTextureStretch(textureFootprintStretch(s));
             }
+            setMaterialNeeded(traceNeedsMaterial(s));
             field = map(tracePoint(s, light, settings));
             s.evaluations = s.evaluations + 1;
             if (secondaryRays() && s.inside) {
@@ -71,7 +73,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
                 break;
             }
             s = traceBeginNode(rayTreeTop(tree));
-            s.textureSamples = textureSamplesPerHit();
+            s.materialSamples = materialSamplesPerHit();
             s.pixelAngle = pixelAngle;
             tree = rayTreePop(tree);
         }

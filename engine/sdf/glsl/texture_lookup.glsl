@@ -27,7 +27,7 @@ SHARED_FN vec3 imageTextureColor(vec3 p, real distance, vec4 q0, vec4 q1, vec4 q
 // The sample with the image's colour c in the role q0.z gives it: its
 // colours multiplied by c, or, for a bump map (lecture notes 1.2), its bump
 // height the grey value of c (the mean of its channels) times the depth q0.w,
-// which the tracer differentiates over the texture phase's samples around
+// which the tracer differentiates over the material phase's samples around
 // the hit (tracer.glsl).
 SHARED_FN Sample imageTexturedSample(Sample s, vec3 c, vec4 q0) {
     int role = int(q0.z);

@@ -1,8 +1,9 @@
 // The per-sample tracer as a state machine (thesis, sections 2.1-2.2).
 // sample_driver.glsl drives it, the same code in both backends: one loop, one
 // evaluation of the scene per iteration, at most traceIterationBound iterations.
-// Phases: primary march, 4 tetrahedron normal samples, M ambient-occlusion
-// samples, then per light either a shadow march or (shadows off) a direct shade.
+// Phases: primary march, 4 tetrahedron normal samples, the hit's material
+// (one sample, five with an image bump map), M ambient-occlusion samples,
+// then per light either a shadow march or (shadows off) a direct shade.
 
 const int PHASE_MARCH = 0;
 const int PHASE_NORMAL = 1;
@@ -12,7 +13,7 @@ const int PHASE_LIGHT = 4;
 const int PHASE_DONE = 5;
 const int PHASE_LEAVE = 6;  // a primary ray that starts on a surface or inside a solid steps out of it
 const int PHASE_ENTER = 7;  // a primary ray confirms a hit on a thin feature by entering it
-const int PHASE_TEXTURE = 8;  // the hit's material again, its image textures filtered by the normal's slant
+const int PHASE_MATERIAL = 8;  // the hit's material, its image textures filtered by the normal's slant
 
 const int SHADOW_NONE = 0;
 const int SHADOW_HARD = 1;
@@ -56,8 +57,8 @@ struct TraceState {
     bool inside;        // the ray travels inside a solid: it marches on the negated field
     real pathLength;    // distance from the eye to this ray's origin, for the footprint epsilon
     real enterSlope;    // PHASE_ENTER: the steepest rate of change of the field along the ray so far
-    int textureSamples; // evaluations of PHASE_TEXTURE per hit (set by the driver): 0 without image
-                        // textures, 1 for their colour, 5 with an image bump map (four around the hit first)
+    int materialSamples; // evaluations of PHASE_MATERIAL per hit (set by the driver): 1 for the hit's
+                         // material, 5 with an image bump map (four around the hit first)
     real pixelAngle;    // a pixel's width per unit of distance (set by the driver): the bump samples' spacing
 };
 
@@ -119,13 +120,22 @@ SHARED_FN int lightIndex(TraceState s) { return s.light; }
 
 SHARED_FN bool traceNeedsSample(TraceState s) {
     return s.phase == PHASE_MARCH || s.phase == PHASE_NORMAL || s.phase == PHASE_AO ||
-           s.phase == PHASE_SHADOW || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER || s.phase == PHASE_TEXTURE;
+           s.phase == PHASE_SHADOW || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER || s.phase == PHASE_MATERIAL;
 }
+
+// Whether an evaluation must carry the material or only the distances. Only
+// the material phase's material is shaded: every hit takes one evaluation
+// there, at the hit, so the march's own material is never used. Other phases
+// read two material fields, the transparency (shadows, the eye inside glass)
+// and the bump height (the normal); a backend may leave materials out of
+// their evaluations only in scenes where those are 0 everywhere
+// (cpu/interpreter.inl), and gets the same floats.
+SHARED_FN bool traceNeedsMaterial(TraceState s) { return s.phase == PHASE_MATERIAL; }
 
 // Image textures take their mip level from the footprint of a pixel across
 // the ray (texture_lookup.glsl); on a surface seen at a slant the footprint
 // is longer along it by 1 / cos, where a level that small would alias (moire
-// towards the horizon). The texture phase's evaluation widens the footprint
+// towards the horizon). The material phase's evaluation widens the footprint
 // by that factor (the larger of the two axes, as mipmapping hardware does),
 // up to 16 (4 levels). Its material is the only one shaded: every other
 // evaluation (march, normal, AO and shadow samples) reads distances, the
@@ -134,7 +144,7 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
 // lookups.
 const real TEXTURE_MAX_STRETCH = real(16);
 SHARED_FN real textureFootprintStretch(TraceState s) {
-    if (s.phase != PHASE_TEXTURE) {
+    if (s.phase != PHASE_MATERIAL) {
         return real(0);
     }
     real slant = abs(dot3(s.shadingNormal, s.rayDirection));
@@ -143,12 +153,12 @@ SHARED_FN real textureFootprintStretch(TraceState s) {
 
 // Image bump maps (texture_lookup.glsl) are differentiated by the notes'
 // central differences, with Delta about one texel of the level the lookups
-// read: the texture phase first evaluates the four tetrahedron vertices
+// read: the material phase first evaluates the four tetrahedron vertices
 // around the hit, a pixel's footprint apart, widened by the slant as the
 // lookups' mip level is. (The normal's own samples, epsilon apart, would
 // differentiate the bilinear interpolation between texels, which is
 // discontinuous at every texel edge.)
-const int TEXTURE_COLOR_SAMPLE = 4;  // PHASE_TEXTURE's counter for the evaluation at the hit
+const int HIT_MATERIAL_SAMPLE = 4;  // PHASE_MATERIAL's counter for the evaluation at the hit
 SHARED_FN real bumpSpacing(TraceState s) {
     return s.pixelAngle * (s.pathLength + s.t) * textureFootprintStretch(s);
 }
@@ -161,10 +171,10 @@ SHARED_FN vec3 tracePoint(TraceState s, Light light, TraceSettings settings) {
     if (s.phase == PHASE_MARCH || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER) {
         return s.rayOrigin + s.rayDirection * s.t;
     }
-    if (s.phase == PHASE_TEXTURE && s.counter < TEXTURE_COLOR_SAMPLE) {
+    if (s.phase == PHASE_MATERIAL && s.counter < HIT_MATERIAL_SAMPLE) {
         return s.hitPoint + tetrahedronVertex(s.counter) * bumpSpacing(s);
     }
-    if (s.phase == PHASE_TEXTURE) {
+    if (s.phase == PHASE_MATERIAL) {
         return s.hitPoint;
     }
     if (s.phase == PHASE_NORMAL && s.counter == 4) {
@@ -283,7 +293,6 @@ SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
     s.hit = true;
     s.hitPoint = s.rayOrigin + s.rayDirection * s.t;
     s.hitEpsilon = epsilon;
-    s.material = field.material;
     s.phase = PHASE_NORMAL;
     s.counter = 0;
     s.normalSum = vec3(real(0));
@@ -431,27 +440,24 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
     }
     s.normal = normalize3(s.normalSum);
     // with an image bump map every bump map is differentiated over the
-    // texture phase's wider samples (advanceTexture), the procedural ones too
-    s.shadingNormal = s.textureSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
-    if (s.textureSamples > 0) {
-        s.phase = PHASE_TEXTURE;
-        s.counter = TEXTURE_COLOR_SAMPLE + 1 - s.textureSamples;
-        s.bumpSum = vec3(real(0));
-        return s;
-    }
-    return beginOcclusion(s, settings);
+    // material phase's wider samples (advanceMaterial), the procedural ones too
+    s.shadingNormal = s.materialSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
+    s.phase = PHASE_MATERIAL;
+    s.counter = HIT_MATERIAL_SAMPLE + 1 - s.materialSamples;
+    s.bumpSum = vec3(real(0));
+    return s;
 }
 
 // The bump samples around the hit, then the hit's material with its image
 // textures filtered for the slant.
-SHARED_FN TraceState advanceTexture(TraceState s, Sample field, TraceSettings settings) {
-    if (s.counter < TEXTURE_COLOR_SAMPLE) {
+SHARED_FN TraceState advanceMaterial(TraceState s, Sample field, TraceSettings settings) {
+    if (s.counter < HIT_MATERIAL_SAMPLE) {
         s.bumpSum = s.bumpSum + tetrahedronVertex(s.counter) * field.material.bump;
         s.counter = s.counter + 1;
         return s;
     }
     s.material = field.material;
-    if (s.textureSamples > 1) {
+    if (s.materialSamples > 1) {
         s.shadingNormal = bumpedNormal(s.normal, s.bumpSum, bumpSpacing(s));
     }
     return beginOcclusion(s, settings);
@@ -616,8 +622,8 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
     if (s.phase == PHASE_NORMAL) {
         return advanceNormal(s, field, settings);
     }
-    if (s.phase == PHASE_TEXTURE) {
-        return advanceTexture(s, field, settings);
+    if (s.phase == PHASE_MATERIAL) {
+        return advanceMaterial(s, field, settings);
     }
     if (s.phase == PHASE_AO) {
         return advanceOcclusion(s, field, settings);
@@ -634,7 +640,7 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
 // Worst case of loop iterations for one sample: the GLSL backend checks it against
 // llvmpipe's loop limiter. The march's steps (normal samples of a thin hit
 // among them) stop at maxSteps, 5 over at most, then 5 normal samples and
-// the texture phase's five at most.
+// the material phase's five at most.
 SHARED_FN int traceIterationBound(TraceSettings settings) {
     int shadowSamples = settings.shadowMode == SHADOW_NONE ? 0 : SHADOW_SAMPLE_CAP;
     return settings.maxSteps + 15 + settings.aoSamples + settings.lightCount * (shadowSamples + 1) + 1;
