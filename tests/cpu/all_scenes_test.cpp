@@ -15,6 +15,16 @@ namespace {
 
 class EveryScene : public ::testing::TestWithParam<test::SceneFile> {};
 
+// Two programs of one scene render the same bits: colours, depths, step and
+// evaluation counts.
+void expectSameRender(const program::Program& a, const program::Program& b) {
+    render::RenderOutcome x = cpu::renderCpu(a), y = cpu::renderCpu(b);
+    EXPECT_EQ(x.frame.color.rgb, y.frame.color.rgb);
+    EXPECT_EQ(x.frame.depth, y.frame.depth);
+    EXPECT_EQ(x.frame.steps, y.frame.steps);
+    EXPECT_EQ(x.frame.evaluations, y.frame.evaluations);
+}
+
 TEST_P(EveryScene, RendersFinitePixels) {
     scene::Scene s = scene::loadSceneFile(GetParam().path());
     program::Program p = program::compileScene(s, {.width = 64, .height = 36, .aa = 1});
@@ -33,10 +43,7 @@ TEST_P(EveryScene, WithoutMirrorsOrGlassRendersAsThroughTheRayTree) {
     if (p.secondaryRays) return;  // a scene with mirrors or glass: the tree is its own
     program::Program tree = p;
     tree.secondaryRays = true;
-    render::RenderOutcome without = cpu::renderCpu(p), with = cpu::renderCpu(tree);
-    EXPECT_EQ(without.frame.color.rgb, with.frame.color.rgb);
-    EXPECT_EQ(without.frame.steps, with.frame.steps);
-    EXPECT_EQ(without.frame.evaluations, with.frame.evaluations);
+    expectSameRender(p, tree);
 }
 
 // The march, normal, AO and shadow evaluations of a scene whose materials
@@ -49,11 +56,7 @@ TEST_P(EveryScene, DistanceOnlyEvaluationsRenderAsWithMaterials) {
     program::Program p = program::compileScene(s, {.width = 48, .height = 27, .aa = 1});
     program::Program materials = p;
     materials.distanceOnlyMarch = false;
-    render::RenderOutcome distances = cpu::renderCpu(p), full = cpu::renderCpu(materials);
-    EXPECT_EQ(distances.frame.color.rgb, full.frame.color.rgb);
-    EXPECT_EQ(distances.frame.depth, full.frame.depth);
-    EXPECT_EQ(distances.frame.steps, full.frame.steps);
-    EXPECT_EQ(distances.frame.evaluations, full.frame.evaluations);
+    expectSameRender(p, materials);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::allSceneFiles()),
