@@ -156,7 +156,7 @@ std::vector<Instruction> outsideBoundCode(const program::Program& program) {
     int base = static_cast<int>(program.params.size());
     int r = program.result;
     std::vector<Instruction> code = {{Opcode::Translate, 1, 0, -1, base, -1, 0},
-                                     {Opcode::Box, r, 1, -1, base + 1, 0, 0},
+                                     {Opcode::Box, r, 1, -1, base + 1, sdf::f64::MATERIAL_SLOT, 0},
                                      {Opcode::ScaleDistance, r, r, 0, base + 2, -1, 0},
                                      {Opcode::StepScale, r, r, 0, base + 3, -1, 0}};
     if (endsWithGround(program)) {

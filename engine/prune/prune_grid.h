@@ -82,7 +82,9 @@ inline constexpr int kMinPrunedInstructions = 128;
 
 // The field outside the grid: a safe step to the root's box (reading
 // outsideBoundParams from slot Program::params.size() on), the ground unioned
-// in exactly when the scene has one; result in Program::result.
+// in exactly when the scene has one; result in Program::result. The box
+// carries the default material (MATERIAL_SLOT), which
+// Program::samplesReadMaterials checks with the instructions' own.
 std::vector<program::Instruction> outsideBoundCode(const program::Program& program);
 std::vector<glm::dvec4> outsideBoundParams(const program::Program& program);
 inline constexpr int kOutsideBoundSlots = 4;
