@@ -245,7 +245,7 @@ struct SampleDriver : Texels {
     const prune::PruneGrid* grid;
     const vec4* params;
     Scratch& scratch;
-    bool distancesOnlyAllowed;  // no phase but the material phase reads materials (Kernel)
+    bool distanceOnlyAllowed;  // no phase but the material phase reads materials (Kernel)
     bool withMaterial = true;
 
     vec4 P(int slot) const { return params[slot]; }
@@ -255,7 +255,7 @@ struct SampleDriver : Texels {
     bool imageTextures() const { return !program.textureFiles.empty(); }
     int materialSamplesPerHit() const { return program.materialSamplesPerHit(); }
     void setTextureStretch(real k) { textureStretch = k; }
-    void setMaterialNeeded(bool needed) { withMaterial = needed || !distancesOnlyAllowed; }
+    void setMaterialNeeded(bool needed) { withMaterial = needed || !distanceOnlyAllowed; }
 
 #include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
@@ -281,13 +281,13 @@ struct Kernel {
     std::vector<vec4> params;  // the program's, then the grid's
     program::ResolvedImages images;
     // The tracer's evaluations outside its material phase may leave the
-    // materials out: they read none in this scene (Program::marchReadsMaterials).
-    bool distancesOnly;
+    // materials out: they read none in this scene (Program::samplesReadMaterials).
+    bool distanceOnly;
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p),
           grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr),
-          distancesOnly(p.distanceOnlyMarch && !p.marchReadsMaterials()) {
+          distanceOnly(p.distanceOnlyEvaluation && !p.samplesReadMaterials()) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }
@@ -310,7 +310,7 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch, distancesOnly}.traceSample(
+        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch, distanceOnly}.traceSample(
             px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }

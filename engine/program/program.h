@@ -92,7 +92,7 @@ struct Program {
     bool prune = true;  // debug switch: false evaluates the whole program everywhere
     // debug switch: false makes the CPU backend carry materials through every
     // evaluation, not only the material phase's (cpu/interpreter.inl)
-    bool distanceOnlyMarch = true;
+    bool distanceOnlyEvaluation = true;
 
     CameraParams camera;
     TraceParams trace;
@@ -136,7 +136,7 @@ struct Program {
     // transmits (shadows, an eye inside glass read the transparency) or
     // there is a procedural bump map (the normal reads the height). If not,
     // a backend may evaluate them for their distances only.
-    bool marchReadsMaterials() const;
+    bool samplesReadMaterials() const;
     int width = 0;
     int height = 0;
     int aa = 1;

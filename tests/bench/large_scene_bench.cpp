@@ -67,7 +67,7 @@ enum CpuMode { kWhole = 0, kPruned = 1, kPrunedMaterials = 2 };
 void BM_Cpu(benchmark::State& state) {
     const auto mode = static_cast<CpuMode>(state.range(1));
     program::Program p = compiled(static_cast<int>(state.range(0)), mode != kWhole);
-    p.distanceOnlyMarch = mode != kPrunedMaterials;
+    p.distanceOnlyEvaluation = mode != kPrunedMaterials;
     std::shared_ptr<const prune::PruneGrid> grid = prune::pruneGridFor(p);
     for (auto _ : state) {
         benchmark::DoNotOptimize(cpu::renderCpu(p));
@@ -120,26 +120,32 @@ glcontext::OsMesaContext& context() {
     return *c;
 }
 
+// Wall time of `work`.
+double secondsOf(const std::function<void()>& work) {
+    auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // GL: the grid (built apart, as the window does on a background thread),
 // the program's build (generation, compile, link and the first draw, where
 // llvmpipe compiles the shader to machine code), then the time of a second
 // render.
 void BM_Gl(benchmark::State& state) {
     program::Program p = compiled(static_cast<int>(state.range(0)), true);
-    auto gridStart = std::chrono::steady_clock::now();
-    prune::pruneGridFor(p);
-    double grid = std::chrono::duration<double>(std::chrono::steady_clock::now() - gridStart).count();
+    double grid = secondsOf([&] { prune::pruneGridFor(p); });
     gl::GlRenderer renderer(context().gl());
-    auto start = std::chrono::steady_clock::now();
+    double build = 0;
     try {
-        renderer.prepare(p);
+        build = secondsOf([&] {
+            renderer.prepare(p);
+            renderer.render(p);
+        });
     } catch (const std::exception& refused) {
-        // the 1001-node scenes: over the size bound, the CPU backend stands in
+        // over the size bound: the CPU backend stands in
         state.SkipWithError(refused.what());
         return;
     }
-    renderer.render(p);
-    double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (auto _ : state) {
         benchmark::DoNotOptimize(renderer.render(p));
     }
@@ -169,18 +175,13 @@ BENCHMARK(BM_GridAfterEdit)
 // at the same size; the median, the extremes and how many scenes the CPU
 // renders faster. The scenes' own settings at 160x90, AA 1; range(0) = 0
 // turns the CPU's distance-only evaluation off.
-double secondsOf(const std::function<void()>& work) {
-    auto start = std::chrono::steady_clock::now();
-    work();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 void BM_SceneSuiteCpuOverGl(benchmark::State& state) {
     std::vector<double> ratios;
     for (auto _ : state) {
         for (const test::SceneFile& file : test::allSceneFiles()) {
             program::Program p = program::compileScene(scene::loadSceneFile(file.path()),
                                                        {.width = kWidth, .height = kHeight, .aa = 1});
-            p.distanceOnlyMarch = state.range(0) != 0;
+            p.distanceOnlyEvaluation = state.range(0) != 0;
             prune::pruneGridFor(p);
             gl::GlRenderer renderer(context().gl());
             renderer.prepare(p);

@@ -162,7 +162,7 @@ BENCHMARK_CAPTURE(bumpMapCost, gl, true)->Arg(0)->Arg(1)->Unit(benchmark::kMilli
 
 // What image textures cost: tutorial 14 with its four image-textured
 // primitives and wall (range 1) and with the textures off (range 0: no
-// texture instructions, no material phase), 480x270 AA 1, CPU (2 threads) and
+// texture instructions, one material sample per hit), 480x270 AA 1, CPU (2 threads) and
 // GL, in one run.
 void imageTextureCost(benchmark::State& state, bool gl) {
     scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/tutorial/14_image_textures.json");

@@ -55,7 +55,7 @@ TEST_P(EveryScene, DistanceOnlyEvaluationsRenderAsWithMaterials) {
     scene::Scene s = scene::loadSceneFile(GetParam().path());
     program::Program p = program::compileScene(s, {.width = 48, .height = 27, .aa = 1});
     program::Program materials = p;
-    materials.distanceOnlyMarch = false;
+    materials.distanceOnlyEvaluation = false;
     expectSameRender(p, materials);
 }
 

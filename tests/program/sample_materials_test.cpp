@@ -1,4 +1,4 @@
-// Program::marchReadsMaterials decides whether the CPU backend may evaluate
+// Program::samplesReadMaterials decides whether the CPU backend may evaluate
 // the march, normal, AO and shadow samples for their distances only: it must
 // say yes where no such sample reads a material and no where one does, and
 // follow material edits, which change parameters and not the program's
@@ -18,29 +18,29 @@ program::Program compiledScene(const std::string& relative) {
     return program::compileScene(s, {.width = 16, .height = 9, .aa = 1});
 }
 
-TEST(MarchReadsMaterials, NotInAnOpaqueSceneWithoutBumpMaps) {
-    EXPECT_FALSE(compiledScene("default.json").marchReadsMaterials());
+TEST(SamplesReadMaterials, NotInAnOpaqueSceneWithoutBumpMaps) {
+    EXPECT_FALSE(compiledScene("default.json").samplesReadMaterials());
 }
 
 // Shadows are tinted by transparent occluders, and an eye inside glass is
 // told by the transparency at the first sample.
-TEST(MarchReadsMaterials, WhereAMaterialTransmits) {
-    EXPECT_TRUE(compiledScene("tutorial/09_glass.json").marchReadsMaterials());
+TEST(SamplesReadMaterials, WhereAMaterialTransmits) {
+    EXPECT_TRUE(compiledScene("tutorial/09_glass.json").samplesReadMaterials());
 }
 
 // The normal's samples carry the bump height.
-TEST(MarchReadsMaterials, WhereAProceduralBumpMapIs) {
-    EXPECT_TRUE(compiledScene("tutorial/13_bump_map.json").marchReadsMaterials());
+TEST(SamplesReadMaterials, WhereAProceduralBumpMapIs) {
+    EXPECT_TRUE(compiledScene("tutorial/13_bump_map.json").samplesReadMaterials());
 }
 
-TEST(MarchReadsMaterials, FollowsAnEditedTransparency) {
+TEST(SamplesReadMaterials, FollowsAnEditedTransparency) {
     scene::Scene s = scene::loadSceneFile(test::sourceDir() + "/scenes/default.json");
     ASSERT_FALSE(s.materials.empty());
     program::Program before = program::compileScene(s, {.width = 16, .height = 9, .aa = 1});
     s.materials.back().transparency = 0.25;
     program::Program after = program::compileScene(s, {.width = 16, .height = 9, .aa = 1});
-    EXPECT_FALSE(before.marchReadsMaterials());
-    EXPECT_TRUE(after.marchReadsMaterials());
+    EXPECT_FALSE(before.samplesReadMaterials());
+    EXPECT_TRUE(after.samplesReadMaterials());
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ struct TraceState {
     int phase;
     int counter;        // samples taken in the current phase
     int steps;          // primary-march evaluations
-    int evaluations;    // all evaluations of the field: march, normal, AO and shadow samples
+    int evaluations;    // all evaluations of the field: march, normal, material, AO and shadow samples
     bool hit;
     vec3 rayOrigin;
     vec3 rayDirection;
