@@ -92,7 +92,9 @@ struct MaterialSamples {
 // The sample registers of an evaluation that reads distances only
 // (traceNeedsMaterial): the same shared functions run on samples whose
 // material is a constant, and with nothing storing the materials they
-// compute, the compiler drops that work (material mixes, textures).
+// compute, the compiler drops that work (loads, mixes, ground patterns).
+// Image textures skip their lookups at stretch 0 anyway; a triplanar
+// texture's formula still runs (its tape is not free of side effects).
 struct DistanceSamples {
     Distances* registers;
 
