@@ -90,7 +90,7 @@ struct MaterialSamples {
 };
 
 // The sample registers of an evaluation that reads distances only
-// (traceNeedsMaterial): the same shared functions run on samples whose
+// (traceMaterialReads): the same shared functions run on samples whose
 // material is a constant, and with nothing storing the materials they
 // compute, the compiler drops that work (loads, mixes, ground patterns).
 // Image textures skip their lookups at stretch 0 anyway; a triplanar
@@ -247,7 +247,7 @@ struct SampleDriver : Texels {
     const prune::PruneGrid* grid;
     const vec4* params;
     Scratch& scratch;
-    bool distanceOnlyAllowed;  // no phase but the material phase reads materials (Kernel)
+    int sceneMaterialReads;  // the fields worth a material (Kernel)
     bool withMaterial = true;
 
     vec4 P(int slot) const { return params[slot]; }
@@ -257,7 +257,7 @@ struct SampleDriver : Texels {
     bool imageTextures() const { return !program.textureFiles.empty(); }
     int materialSamplesPerHit() const { return program.materialSamplesPerHit(); }
     void setTextureStretch(real k) { textureStretch = k; }
-    void setMaterialNeeded(bool needed) { withMaterial = needed || !distanceOnlyAllowed; }
+    void setMaterialReads(int reads) { withMaterial = (reads & sceneMaterialReads) != 0; }
 
 #include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
@@ -282,14 +282,15 @@ struct Kernel {
     std::shared_ptr<const prune::PruneGrid> grid;
     std::vector<vec4> params;  // the program's, then the grid's
     program::ResolvedImages images;
-    // The tracer's evaluations outside its material phase may leave the
-    // materials out: they read none in this scene (Program::samplesReadMaterials).
-    bool distanceOnly;
+    // The material fields of this scene the tracer's evaluations read
+    // (Program::materialReads): an evaluation that reads none of them
+    // leaves the materials out. All of them under the debug switch.
+    int materialReads;
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p),
           grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr),
-          distanceOnly(p.distanceOnlyEvaluation && !p.samplesReadMaterials()) {
+          materialReads(p.distanceOnlyEvaluation ? p.materialReads() : ~0) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }
@@ -312,7 +313,7 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch, distanceOnly}.traceSample(
+        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch, materialReads}.traceSample(
             px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }

@@ -229,7 +229,7 @@ std::string generateFragmentShader(const program::Program& program) {
         << "int materialSamplesPerHit() { return " << program.materialSamplesPerHit() << "; }\n"
         // every map() carries the material: llvmpipe would run a branch that
         // leaves it out on every lane anyway (docs/toolchain-notes.md)
-        << "void setMaterialNeeded(bool needed) {}\n"
+        << "void setMaterialReads(int reads) {}\n"
         << sdf::glslEnvironmentLookup() << sdf::glslSampleDriver() << kMain;
     return out.str();
 }

@@ -674,16 +674,18 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
 
 int Program::materialSamplesPerHit() const { return imageBumps ? shared::HIT_MATERIAL_SAMPLE + 1 : 1; }
 
-bool Program::samplesReadMaterials() const {
+int Program::materialReads() const {
     auto transmits = [&](int slot) {
         auto q = [&](int i) { return params[static_cast<size_t>(slot + i)]; };
         return shared::materialFromSlots(q(0), q(1), q(2), q(3), q(4), q(5)).transparency > 0.0;
     };
     // the default material: Empty's, and the pruning grid's outside box's (prune/prune_grid.h)
-    if (transmits(shared::MATERIAL_SLOT)) return true;
-    return std::any_of(code.begin(), code.end(), [&](const Instruction& in) {
-        return in.op == Opcode::Bump || (in.material >= 0 && transmits(in.material));
-    });
+    bool transparency = transmits(shared::MATERIAL_SLOT) ||
+                        std::any_of(code.begin(), code.end(),
+                                    [&](const Instruction& in) { return in.material >= 0 && transmits(in.material); });
+    bool bump = std::any_of(code.begin(), code.end(), [](const Instruction& in) { return in.op == Opcode::Bump; });
+    return shared::MATERIAL_READS_SHADING | (transparency ? shared::MATERIAL_READS_TRANSPARENCY : 0) |
+           (bump ? shared::MATERIAL_READS_BUMP : 0);
 }
 
 std::uint64_t Program::structureKey() const {

@@ -91,7 +91,7 @@ struct Program {
     glm::dvec3 rootMax{0.0};
     bool prune = true;  // debug switch: false evaluates the whole program everywhere
     // debug switch: false makes the CPU backend carry materials through every
-    // evaluation, not only the material phase's (cpu/interpreter.inl)
+    // evaluation, not only those that read them (cpu/interpreter.inl)
     bool distanceOnlyEvaluation = true;
 
     CameraParams camera;
@@ -131,12 +131,13 @@ struct Program {
     // Evaluations of the material phase per hit (sdf/glsl/tracer.glsl): 1,
     // the hit's material, or 5 with an image bump map.
     int materialSamplesPerHit() const;
-    // Whether the tracer's evaluations outside the material phase read
-    // materials (sdf/glsl/tracer.glsl, traceNeedsMaterial): some material
-    // transmits (shadows, an eye inside glass read the transparency) or
-    // there is a procedural bump map (the normal reads the height). If not,
-    // a backend may evaluate them for their distances only.
-    bool samplesReadMaterials() const;
+    // The material fields the tracer's evaluations read (sdf/glsl/tracer.glsl,
+    // traceMaterialReads) that are not 0 everywhere in this scene: the
+    // shading always, the transparency where some material transmits
+    // (shadows, an eye inside glass), the bump height where there is a
+    // procedural bump map (the normal). A backend may evaluate the phases
+    // that read none of these for their distances only.
+    int materialReads() const;
     int width = 0;
     int height = 0;
     int aa = 1;

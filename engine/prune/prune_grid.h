@@ -84,7 +84,7 @@ inline constexpr int kMinPrunedInstructions = 128;
 // outsideBoundParams from slot Program::params.size() on), the ground unioned
 // in exactly when the scene has one; result in Program::result. The box
 // carries the default material (MATERIAL_SLOT), which
-// Program::samplesReadMaterials checks with the instructions' own.
+// Program::materialReads checks with the instructions' own.
 std::vector<program::Instruction> outsideBoundCode(const program::Program& program);
 std::vector<glm::dvec4> outsideBoundParams(const program::Program& program);
 inline constexpr int kOutsideBoundSlots = 4;

@@ -83,7 +83,7 @@ struct AnalyticDriver {
     bool imageTextures() const { return false; }
     int materialSamplesPerHit() const { return 1; }
     void setTextureStretch(real) {}
-    void setMaterialNeeded(bool) {}
+    void setMaterialReads(int) {}
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 
 #include "sdf/glsl/environment_lookup.glsl"

@@ -6,8 +6,8 @@
 // materials have image textures, materialSamplesPerHit(), how many
 // evaluations the material phase takes (tracer.glsl's TraceState),
 // setTextureStretch(k), which widens the footprint of the next map()'s image
-// textures (texture_lookup.glsl), and setMaterialNeeded(b), false when the
-// next map() is read for its distances (traceNeedsMaterial). GLSL: the
+// textures (texture_lookup.glsl), and setMaterialReads(bits), which
+// material fields the next map() is read for (traceMaterialReads). GLSL: the
 // generated functions before it; C++: members of the struct this file is
 // included in (cpu/interpreter.inl).
 // One call site of map() (compile cost grows with call sites, see
@@ -53,7 +53,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
             if (imageTextures()) {
                 setTextureStretch(textureFootprintStretch(s));
             }
-            setMaterialNeeded(traceNeedsMaterial(s));
+            setMaterialReads(traceMaterialReads(s));
             field = map(tracePoint(s, light, settings));
             s.evaluations = s.evaluations + 1;
             if (secondaryRays() && s.inside) {

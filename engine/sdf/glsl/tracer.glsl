@@ -123,14 +123,30 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
            s.phase == PHASE_SHADOW || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER || s.phase == PHASE_MATERIAL;
 }
 
-// Whether an evaluation must carry the material or only the distances. Only
-// the material phase's material is shaded: every hit takes one evaluation
-// there, at the hit, so the march's own material is never used. Other phases
-// read two material fields, the transparency (shadows, the eye inside glass)
-// and the bump height (the normal); a backend may leave materials out of
-// their evaluations only in scenes where those are 0 everywhere
-// (cpu/interpreter.inl), and gets the same floats.
-SHARED_FN bool traceNeedsMaterial(TraceState s) { return s.phase == PHASE_MATERIAL; }
+// What an evaluation reads of the material it returns, as bits. Only the
+// material phase's material is shaded: every hit takes one evaluation there,
+// at the hit, so the march's own material is never used. Other phases read
+// one field each: shadows the transparency (glass tints them), the march's
+// first sample too (the eye inside glass), the normal's samples the
+// procedural bump height; AO and the rest read none. A backend may leave the
+// materials out of an evaluation whose fields are 0 everywhere in the scene
+// (Program::materialReads, cpu/interpreter.inl), and gets the same floats.
+const int MATERIAL_READS_NONE = 0;
+const int MATERIAL_READS_SHADING = 1;  // the whole material
+const int MATERIAL_READS_TRANSPARENCY = 2;
+const int MATERIAL_READS_BUMP = 4;
+SHARED_FN int traceMaterialReads(TraceState s) {
+    if (s.phase == PHASE_MATERIAL) {
+        return MATERIAL_READS_SHADING;
+    }
+    if (s.phase == PHASE_SHADOW || (s.phase == PHASE_MARCH && s.steps == 0 && s.depth == 0)) {
+        return MATERIAL_READS_TRANSPARENCY;
+    }
+    if (s.phase == PHASE_NORMAL) {
+        return MATERIAL_READS_BUMP;
+    }
+    return MATERIAL_READS_NONE;
+}
 
 // Image textures take their mip level from the footprint of a pixel across
 // the ray (texture_lookup.glsl); on a surface seen at a slant the footprint
