@@ -95,6 +95,9 @@ struct Material {
     double bumpDepth = 0.01;              // height of the field's range, object units
     std::string bumpImage;                // grey height map, relative to the scene's folder
 
+    // A hit on it traces reflected or transmitted rays (within render.max_depth).
+    bool mirrorOrGlass() const { return reflectivity > 0 || transparency > 0; }
+
     bool operator==(const Material&) const = default;
 };
 

@@ -39,6 +39,12 @@ std::vector<double> except(std::vector<double> values, double own) {
 
 std::string always(const Scene&) { return ""; }
 
+std::string noMirrorsOrGlass(const Scene& s) {
+    bool any =
+        std::any_of(s.materials.begin(), s.materials.end(), [](const scene::Material& m) { return m.mirrorOrGlass(); });
+    return any ? "" : "no mirrors or glass";
+}
+
 // The same threshold at the camera's target distance in the other unit.
 void convertEpsilon(Scene& s, double value) {
     auto mode = static_cast<scene::EpsilonMode>(static_cast<int>(value));
@@ -106,6 +112,17 @@ std::vector<Knob> makeKnobs() {
     k.push_back(knob("step_relaxation", always, [](const Scene& s) {
         return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation);
     }));
+    // The ray tree's two limits (sdf/glsl/ray_tree.glsl): bounces, and the
+    // weight below which a secondary ray is dropped.
+    k.push_back(knob("max_depth", noMirrorsOrGlass, [](const Scene& s) {
+        return except({0, 1, 2, 3, 4, 6}, static_cast<double>(s.render.maxDepth));
+    }));
+    k.push_back(knob(
+        "ray_weight_cutoff",
+        [](const Scene& s) { return s.render.maxDepth == 0 ? std::string("max_depth 0") : noMirrorsOrGlass(s); },
+        [](const Scene& s) {
+            return except({0.1, 0.03, 0.01, 0.00390625, 0.001}, s.render.rayWeightCutoff);
+        }));
     return k;
 }
 

@@ -40,6 +40,10 @@ bool readFloats(std::istream& in, std::vector<float>& v, size_t count) {
 scene::Scene referenceScene(const scene::Scene& scene, const ReferenceOptions& options) {
     scene::Scene tight = parity::referenceScene(scene, options.tightening);
     tight.render.aa = std::max(tight.render.aa, options.minimumAa);
+    // every bounce a sweep may ask for (the max_depth and ray_weight_cutoff
+    // knobs); the parity gate's reference keeps the scene's own ray tree
+    tight.render.maxDepth = scene::kMaxTraceDepth;
+    tight.render.rayWeightCutoff /= options.tightening;
     return tight;
 }
 

@@ -14,7 +14,9 @@
 namespace sdfwb::tradeoff {
 
 struct ReferenceOptions {
-    double tightening = 10;  // epsilon / tightening; max steps and shadow steps x tightening (up to the format's limits)
+    // epsilon and the ray weight cutoff / tightening; max steps and shadow
+    // steps x tightening (up to the format's limits); max_depth at its limit
+    double tightening = 10;
     int minimumAa = 1;       // the reference uses at least this AA, and at least the scene's
 };
 

@@ -22,6 +22,9 @@ TEST(ReferenceScene, TightensEpsilonAndStepsAndKeepsAtLeastTheScenesAa) {
     EXPECT_EQ(r.render.shadowSteps, s.render.shadowSteps * 10);
     EXPECT_EQ(r.render.aa, 2);
     EXPECT_EQ(referenceScene(s, {10, 3}).render.aa, 3);
+    // every bounce the max_depth and ray_weight_cutoff knobs may ask for
+    EXPECT_EQ(r.render.maxDepth, scene::kMaxTraceDepth);
+    EXPECT_DOUBLE_EQ(r.render.rayWeightCutoff, s.render.rayWeightCutoff / 10);
 }
 
 TEST(ReferenceKey, ChangesWithContentAndSettingsButNotWithNames) {

@@ -75,15 +75,35 @@ TEST(SweepPlan, DefaultValuesSurroundTheScenesAndStartWithTheCheapest) {
 
 TEST(SweepPlan, KnobsThatDoNothingForTheSceneAreNotSwept) {
     SweepPlan plan = planSweep(sceneWith(0, scene::ShadowMode::None), parseKnobRequests({}));
-    ASSERT_EQ(plan.notSwept.size(), 2u);
+    ASSERT_EQ(plan.notSwept.size(), 4u);
     EXPECT_EQ(plan.notSwept[0].knob, "shadow_steps");
     EXPECT_EQ(plan.notSwept[0].reason, "shadows off");
     EXPECT_EQ(plan.notSwept[1].knob, "ao_samples");
     EXPECT_EQ(plan.notSwept[1].reason, "AO off");
+    EXPECT_EQ(plan.notSwept[2].knob, "max_depth");
+    EXPECT_EQ(plan.notSwept[2].reason, "no mirrors or glass");
+    EXPECT_EQ(plan.notSwept[3].knob, "ray_weight_cutoff");
     for (const Setting& s : plan.settings) {
         ASSERT_NE(s.label.rfind("shadow_steps", 0), 0u) << s.label;
         ASSERT_NE(s.label.rfind("ao_samples", 0), 0u) << s.label;
+        ASSERT_NE(s.label.rfind("max_depth", 0), 0u) << s.label;
     }
+}
+
+// The ray tree's limits are swept where a material reflects or transmits,
+// the cheapest value first.
+TEST(SweepPlan, RayTreeKnobsSweepScenesWithMirrorsOrGlass) {
+    scene::Scene base = sceneWith(0, scene::ShadowMode::Soft);
+    scene::Material glass;
+    glass.name = "glass";
+    glass.transparency = 0.9;
+    base.materials.push_back(glass);
+    SweepPlan plan = planSweep(base, parseKnobRequests({"max_depth", "ray_weight_cutoff"}));
+    EXPECT_TRUE(plan.notSwept.empty());
+    EXPECT_EQ(labels(plan),
+              (std::vector<std::string>{"default", "max_depth=0", "max_depth=1", "max_depth=2", "max_depth=3",
+                                        "max_depth=6", "ray_weight_cutoff=0.1", "ray_weight_cutoff=0.03",
+                                        "ray_weight_cutoff=0.01", "ray_weight_cutoff=0.001"}));
 }
 
 TEST(SweepPlan, EpsilonModeKeepsTheThresholdAtTheCameraDistance) {
