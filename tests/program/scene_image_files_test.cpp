@@ -12,6 +12,7 @@
 #include "image/image_io.h"
 #include "program/compile_scene.h"
 #include "program/scene_images.h"
+#include "scene/scene_json.h"
 #include "scene/scene_validation.h"
 #include "support/scratch_folder.h"
 
@@ -199,6 +200,31 @@ TEST(TextureFiles, MovingTheSceneRebasesTheTexturesToo) {
     moveSceneDirectory(s, "/elsewhere");
     EXPECT_EQ(s.materials[0].textureImage, "../scenes/tutorial/textures/wood.png");
     EXPECT_EQ(textureFiles(s)[0].path, "/scenes/tutorial/textures/wood.png");
+}
+
+// The editor saves a scene whose texture is missing as the user left it: the
+// name survives Save As into another folder (rebased) and the reload, and
+// the scene still compiles and renders its placeholder.
+TEST(TextureFiles, AMissingTextureKeepsItsNameThroughSaveAsAndReload) {
+    test::ScratchFolder folder("sdfwb-missing-texture-");
+    scene::Scene s = texturedIn((folder.path() / "scenes").string());
+    scene::Node ball = scene::Node::make(scene::NodeKind::Sphere);
+    ball.set("material", std::string("wood"));
+    s.root.children.push_back(ball);
+    std::filesystem::path saved = folder.path() / "elsewhere" / "saved.json";
+    std::filesystem::create_directories(saved.parent_path());
+    moveSceneDirectory(s, saved.parent_path());
+    scene::saveSceneFile(s, saved);
+    scene::Scene reloaded = scene::loadSceneFile(saved);
+    EXPECT_EQ(reloaded.materials[0].textureImage, "../scenes/textures/wood.png");
+    std::vector<SceneImageFile> files = textureFiles(reloaded);
+    ASSERT_FALSE(files.empty());
+    EXPECT_EQ(std::filesystem::weakly_canonical(files[0].path),
+              std::filesystem::weakly_canonical(folder.path() / "scenes" / "textures" / "wood.png"));
+    EXPECT_EQ(textureProblems(reloaded).size(), 3u);  // as before the save: two missing files, one unnamed
+    ResolvedImages images = resolveImages(compileScene(reloaded));
+    ASSERT_FALSE(images.textures.empty());
+    EXPECT_GT(images.textures[0]->texels.size(), 0u);  // the placeholder
 }
 
 TEST(TextureFiles, MaterialsNamingOneFileShareItsImageInTheTexelBuffer) {
