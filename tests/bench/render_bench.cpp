@@ -3,7 +3,8 @@
 // cost of the ray tree (mirrors and glass) against the same scenes without it,
 // the cost of the ground's footprint filter against the point pattern, and
 // the cost of environment maps against the background colour, and of bump
-// maps against the same materials without them.
+// maps and textures against the same materials without them, and what
+// distance-only evaluation saves on glass and bump scenes.
 // Run: build/tests/bench/render_bench  (sets MESA_SHADER_CACHE_DISABLE=true itself)
 
 #include <cstdlib>
@@ -146,44 +147,58 @@ BENCHMARK_CAPTURE(environmentMapCost, box_cpu, "tutorial/12_box_map.json", false
 BENCHMARK_CAPTURE(environmentMapCost, box_gl, "tutorial/12_box_map.json", true)
     ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
-// What bump maps cost: tutorial 13 with its three bumped materials (range 1)
-// and without bumps (range 0: no bump instructions), 480x270 AA 1, CPU (2
-// threads) and GL, in one run.
-void bumpMapCost(benchmark::State& state, bool gl) {
-    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/tutorial/13_bump_map.json");
+// What a material effect costs: a tutorial scene as it is (range 1) and with
+// the effect taken off every material (range 0: none of its instructions
+// compiled), 480x270 AA 1, CPU (2 threads) and GL, in one run.
+void materialEffectCost(benchmark::State& state, const char* file, void (*takeOff)(scene::Material&), bool gl) {
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/" + file);
     if (state.range(0) == 0) {
-        for (scene::Material& m : s.materials) m.bump = scene::BumpPattern::None;
+        for (scene::Material& m : s.materials) takeOff(m);
     }
     program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
     renderEachIteration(state, p, gl);
 }
-BENCHMARK_CAPTURE(bumpMapCost, cpu, false)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK_CAPTURE(bumpMapCost, gl, true)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+void noBump(scene::Material& m) { m.bump = scene::BumpPattern::None; }
+void noTexture(scene::Material& m) { m.texture = scene::TexturePattern::None; }
 
-// What image textures cost: tutorial 14 with its four image-textured
-// primitives and wall (range 1) and with the textures off (range 0: no
-// texture instructions, one material sample per hit), 480x270 AA 1, CPU (2 threads) and
-// GL, in one run.
-void imageTextureCost(benchmark::State& state, bool gl) {
-    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/tutorial/14_image_textures.json");
-    if (state.range(0) == 0) {
-        for (scene::Material& m : s.materials) m.texture = scene::TexturePattern::None;
-    }
+// tutorial 13: three bumped materials
+BENCHMARK_CAPTURE(materialEffectCost, bump_cpu, "tutorial/13_bump_map.json", noBump, false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(materialEffectCost, bump_gl, "tutorial/13_bump_map.json", noBump, true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+// tutorial 14: four image-textured primitives and a wall (whose image bump
+// map stays on: its material phase takes five samples either way)
+BENCHMARK_CAPTURE(materialEffectCost, image_texture_cpu, "tutorial/14_image_textures.json", noTexture, false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(materialEffectCost, image_texture_gl, "tutorial/14_image_textures.json", noTexture, true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+// tutorial 10: checker, noise and stripes
+BENCHMARK_CAPTURE(materialEffectCost, procedural_texture_cpu, "tutorial/10_procedural_textures.json", noTexture,
+                  false)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(materialEffectCost, procedural_texture_gl, "tutorial/10_procedural_textures.json", noTexture,
+                  true)
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+
+// What distance-only evaluation saves where some phases read a material
+// field (cpu/interpreter.inl, Program::materialReads): the CPU backend with
+// it (range 1) and carrying materials through every evaluation (range 0), on
+// scenes with glass (shadows and the march's first sample read the
+// transparency) and bump maps (the normal reads the height), 480x270 AA 1.
+void distanceOnlyGain(benchmark::State& state, const char* file) {
+    scene::Scene s = scene::loadSceneFile(sdfwb::test::sourceDir() + "/scenes/" + file);
     program::Program p = program::compileScene(s, {.width = 480, .height = 270, .aa = 1});
-    renderEachIteration(state, p, gl);
+    p.distanceOnlyEvaluation = state.range(0) != 0;
+    renderEachIteration(state, p, false);
 }
-BENCHMARK_CAPTURE(imageTextureCost, cpu, false)
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(3);
-BENCHMARK_CAPTURE(imageTextureCost, gl, true)
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(3);
+BENCHMARK_CAPTURE(distanceOnlyGain, glass, "tutorial/09_glass.json")
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(distanceOnlyGain, glass_and_chrome, "showcase/glass_and_chrome.json")
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(distanceOnlyGain, bump, "tutorial/13_bump_map.json")
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK_CAPTURE(distanceOnlyGain, textured_still_life, "showcase/textured_still_life.json")
+    ->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 }  // namespace
 }  // namespace sdfwb
