@@ -245,7 +245,8 @@ std::string writeReport(const SweepResult& result, const ReportContext& context)
     out << " in " << format("%.0f", result.seconds) << " s";
     if (!context.machine.empty()) out << ", " << context.machine;
     out << ".\n\n"
-        << "Time is the median of the repetitions of each render (backends interleaved, shader builds and an untimed first render of each scene excluded). "
+        << "Time is the median of the repetitions of each render (backends interleaved, shader builds and an untimed "
+           "first render of each scene excluded). "
            "Errors are against the reference (double-precision CPU, tight settings), on the 8-bit display encoding "
            "as `compare` prints them; hit mismatch is the share of sub-samples that hit in one image only, depth "
            "error the mean relative difference of the march distance where both hit everywhere in the pixel. "

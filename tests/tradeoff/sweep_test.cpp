@@ -34,8 +34,8 @@ TEST(Sweep, RendersEachSceneOnceUntimedBeforeItsTimedRenders) {
     options.height = 9;
     options.repetitions = 2;
     options.cacheDir = cache.path();
-    SweepResult result = runSweep({{"empty", s}, {"empty again", s}}, parseKnobRequests({"max_steps=64"}), backends,
-                                  options);
+    SweepResult result =
+        runSweep({{"empty", s}, {"empty again", s}}, parseKnobRequests({"max_steps=64"}), backends, options);
     ASSERT_EQ(result.scenes.size(), 2u);
     int measured = 0;
     for (const SceneResult& scene : result.scenes) {
