@@ -247,7 +247,8 @@ struct SampleDriver : Texels {
     const prune::PruneGrid* grid;
     const vec4* params;
     Scratch& scratch;
-    int sceneMaterialReads;  // the fields worth a material (Kernel)
+    bool distanceOnlyAllowed;  // Program::distanceOnlyEvaluation, the debug switch
+    int sceneMaterialReads;    // the fields worth a material (Program::materialReads)
     bool withMaterial = true;
 
     vec4 P(int slot) const { return params[slot]; }
@@ -257,7 +258,7 @@ struct SampleDriver : Texels {
     bool imageTextures() const { return !program.textureFiles.empty(); }
     int materialSamplesPerHit() const { return program.materialSamplesPerHit(); }
     void setTextureStretch(real k) { textureStretch = k; }
-    void setMaterialReads(int reads) { withMaterial = (reads & sceneMaterialReads) != 0; }
+    void setMaterialReads(int reads) { withMaterial = !distanceOnlyAllowed || (reads & sceneMaterialReads) != 0; }
 
 #include "sdf/glsl/environment_lookup.glsl"
 #include "sdf/glsl/sample_driver.glsl"
@@ -284,13 +285,13 @@ struct Kernel {
     program::ResolvedImages images;
     // The material fields of this scene the tracer's evaluations read
     // (Program::materialReads): an evaluation that reads none of them
-    // leaves the materials out. All of them under the debug switch.
+    // leaves the materials out.
     int materialReads;
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p),
           grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr),
-          materialReads(p.distanceOnlyEvaluation ? p.materialReads() : ~0) {
+          materialReads(p.materialReads()) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }
@@ -313,8 +314,9 @@ struct Kernel {
     }
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
-        TraceState s = SampleDriver{{&images}, program, grid.get(), params.data(), scratch, materialReads}.traceSample(
-            px, py, real(program.width), real(program.height));
+        bool distanceOnly = program.distanceOnlyEvaluation;
+        SampleDriver driver{{&images}, program, grid.get(), params.data(), scratch, distanceOnly, materialReads};
+        TraceState s = driver.traceSample(px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }
 
