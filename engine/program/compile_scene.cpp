@@ -656,8 +656,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     t.stepRelaxation = r.stepRelaxation;
     t.maxDepth = r.maxDepth;
     static_assert(scene::kMaxTraceDepth == shared::MAX_TRACE_DEPTH);
-    program.secondaryRays = r.maxDepth > 0 && std::any_of(scene.materials.begin(), scene.materials.end(),
-                                                          [](const scene::Material& m) { return m.mirrorOrGlass(); });
+    program.secondaryRays = r.maxDepth > 0 && scene.hasMirrorsOrGlass();
     t.ambientLight = scene.environment.ambient;
     t.background = scene.environment.background;
     program.environmentKind = static_cast<int>(scene.environment.map);

@@ -51,6 +51,10 @@ const Material* Scene::findMaterial(std::string_view name) const {
     return nullptr;
 }
 
+bool Scene::hasMirrorsOrGlass() const {
+    return std::any_of(materials.begin(), materials.end(), [](const Material& m) { return m.mirrorOrGlass(); });
+}
+
 Material defaultMaterial() {
     Material m;
     m.name = "";

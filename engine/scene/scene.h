@@ -210,6 +210,9 @@ struct Scene {
 
     // nullptr when no material has that name.
     const Material* findMaterial(std::string_view name) const;
+    // Whether some material reflects or transmits: only then does the ray
+    // tree trace secondary rays.
+    bool hasMirrorsOrGlass() const;
 };
 
 // The material used where a primitive names none ("").

@@ -39,11 +39,7 @@ std::vector<double> except(std::vector<double> values, double own) {
 
 std::string always(const Scene&) { return ""; }
 
-std::string noMirrorsOrGlass(const Scene& s) {
-    bool any =
-        std::any_of(s.materials.begin(), s.materials.end(), [](const scene::Material& m) { return m.mirrorOrGlass(); });
-    return any ? "" : "no mirrors or glass";
-}
+std::string noMirrorsOrGlass(const Scene& s) { return s.hasMirrorsOrGlass() ? "" : "no mirrors or glass"; }
 
 // The same threshold at the camera's target distance in the other unit.
 void convertEpsilon(Scene& s, double value) {

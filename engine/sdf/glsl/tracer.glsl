@@ -131,6 +131,12 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
 // procedural bump height; AO and the rest read none. A backend may leave the
 // materials out of an evaluation whose fields are 0 everywhere in the scene
 // (Program::materialReads, cpu/interpreter.inl), and gets the same floats.
+// The primary ray's first sample, at the eye: where the march learns whether
+// the eye starts inside a solid or inside glass.
+SHARED_FN bool atPrimaryRayStart(TraceState s) {
+    return s.steps == 0 && s.depth == 0;
+}
+
 const int MATERIAL_READS_NONE = 0;
 const int MATERIAL_READS_SHADING = 1;  // the whole material
 const int MATERIAL_READS_TRANSPARENCY = 2;
@@ -139,7 +145,7 @@ SHARED_FN int traceMaterialReads(TraceState s) {
     if (s.phase == PHASE_MATERIAL) {
         return MATERIAL_READS_SHADING;
     }
-    if (s.phase == PHASE_SHADOW || (s.phase == PHASE_MARCH && s.steps == 0 && s.depth == 0)) {
+    if (s.phase == PHASE_SHADOW || (s.phase == PHASE_MARCH && atPrimaryRayStart(s))) {
         return MATERIAL_READS_TRANSPARENCY;
     }
     if (s.phase == PHASE_NORMAL) {
@@ -331,7 +337,7 @@ SHARED_FN TraceState leaveStep(TraceState s, Sample field, TraceSettings setting
 }
 
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
-    if (s.steps == 0 && s.depth == 0 && field.d < -rayEpsilon(s, settings) && field.material.transparency > real(0) &&
+    if (atPrimaryRayStart(s) && field.d < -rayEpsilon(s, settings) && field.material.transparency > real(0) &&
         settings.maxDepth > 0) {
         // The eye inside glass (a transparent solid; the ray tree is on, as
         // it is whenever a material transmits and max_depth > 0) looks out
@@ -340,7 +346,7 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         s.steps = 1;
         return s;
     }
-    if (s.steps == 0 && s.depth == 0 && field.d <= rayEpsilon(s, settings)) {
+    if (atPrimaryRayStart(s) && field.d <= rayEpsilon(s, settings)) {
         // The eye is on a surface or inside a solid (a camera orbiting into
         // the floor, placed on an object): what is behind the eye's own
         // surface is seen, that surface is not. (A hit at t = 0 gave one flat
