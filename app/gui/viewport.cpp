@@ -161,6 +161,8 @@ void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
         if (lane.source == Source::Gl) error_.clear();
         render::RenderControl control;
         control.tileSize = tileSize(lane);
+        // a preview of a large scene is drawn before its grid is built
+        control.waitForPruneGrid = !stages_[lane.stage].preview;
         try {
             lane.job = lane.backend->startProgressive(*lane.next, control);
         } catch (const std::exception& error) {

@@ -16,7 +16,8 @@ namespace {
 template <typename Kernel>
 bool renderTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
                  const std::function<void(const render::TileRect&)>& onTile) {
-    const Kernel kernel(program);
+    using Source = typename Kernel::SourceType;
+    const Kernel kernel(program, control.waitForPruneGrid ? Source::Pruned : Source::PrunedIfBuilt);
     using Real = typename Kernel::Real;
     using vec3 = typename Kernel::Vec3;
     using Scratch = typename Kernel::ScratchType;

@@ -270,14 +270,16 @@ struct SampleDriver : Texels {
 // queries (picking, placement, the readout, on the UI thread) take the whole.
 // Those also see the background colour instead of an environment map's
 // images and black for image textures: the images would have to be read
-// from disk first.
-enum class FieldSource { Pruned, Whole };
+// from disk first. PrunedIfBuilt takes the grid when it is built and the
+// whole program otherwise, starting the grid's build in the background.
+enum class FieldSource { Pruned, PrunedIfBuilt, Whole };
 
 // The scene's constants converted to this precision once per render.
 struct Kernel {
     using Real = real;
     using Vec3 = vec3;
     using ScratchType = Scratch;
+    using SourceType = FieldSource;
 
     const program::Program& program;
     std::shared_ptr<const prune::PruneGrid> grid;
@@ -290,12 +292,12 @@ struct Kernel {
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p),
-          grid(source == FieldSource::Pruned ? prune::pruneGridFor(p) : nullptr),
+          grid(gridFrom(p, source)),
           materialReads(p.materialReads()) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }
-        if (source == FieldSource::Pruned) {
+        if (source != FieldSource::Whole) {
             images = program::resolveImages(p);
             for (const auto& [slot, value] : images.slots) params[static_cast<size_t>(slot)] = vec4(value);
         }
@@ -304,6 +306,15 @@ struct Kernel {
                 params.push_back(vec4(v));
             }
         }
+    }
+
+    static std::shared_ptr<const prune::PruneGrid> gridFrom(const program::Program& p, FieldSource source) {
+        switch (source) {
+        case FieldSource::Pruned: return prune::pruneGridFor(p);
+        case FieldSource::PrunedIfBuilt: return prune::pruneGridIfBuilt(p).value_or(nullptr);
+        case FieldSource::Whole: return nullptr;
+        }
+        return nullptr;
     }
 
     // The primary ray through (px, py), from the camera block of the parameters.

@@ -1,4 +1,5 @@
-// The grid cache: what an edit rebuilds, and one build for callers at once.
+// The grid cache: what an edit rebuilds, one build for callers at once, and
+// renders that do not wait for it.
 
 #include <algorithm>
 #include <memory>
@@ -71,6 +72,28 @@ TEST(PruneGridCache, CallersAtOnceShareOneBuild) {
     EXPECT_EQ(prune::pruneGridsBuilt(), built + 1);
     ASSERT_TRUE(grids[0]);
     for (const auto& grid : grids) EXPECT_EQ(grid, grids[0]);
+}
+
+// The window's previews do not wait for a grid (RenderControl::
+// waitForPruneGrid): without it they evaluate the whole program, which gives
+// the same image (the step counts differ outside the grid, where it marches
+// on a bound), and the grid's build they start is the one a later render
+// waits for.
+TEST(PruneGridCache, ARenderThatDoesNotWaitForTheGridDrawsTheSameImage) {
+    program::Program program =
+        program::compileScene(test::moleculeScene("molecule_100"), {.width = 48, .height = 27, .aa = 1});
+    int offset = firstWith(program, [](const program::Instruction& in) {
+                     return in.op == program::Opcode::Translate && in.param >= 0;
+                 }).param;
+    program.params[static_cast<size_t>(offset)].y += 0.02;  // a grid no other test has built
+    long built = prune::pruneGridsBuilt();
+    render::RenderControl preview;
+    preview.waitForPruneGrid = false;
+    image::Frame drawn = cpu::renderCpu(program, preview).frame;
+    image::Frame waited = cpu::renderCpu(program).frame;
+    EXPECT_EQ(prune::pruneGridsBuilt(), built + 1);
+    EXPECT_EQ(drawn.color.rgb, waited.color.rgb);
+    EXPECT_EQ(drawn.depth, waited.depth);
 }
 
 }  // namespace
