@@ -80,7 +80,8 @@ bool renderTiles(const program::Program& program, const render::RenderControl& c
 bool renderCpuTiles(const program::Program& program, const render::RenderControl& control, image::Frame& frame,
                     const std::function<void(const render::TileRect&)>& onTile) {
     // The whole render on the caller's thread count: the tiles and the pruning
-    // grid the kernel builds first (its own parallel loop) alike.
+    // grid the kernel builds first (its own parallel loop) alike; a render
+    // that does not wait for the grid leaves its build to the background.
     bool finished = false;
     jobs::withThreads(control.threads, [&] {
         finished = control.precision == render::Precision::Double

@@ -123,6 +123,12 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
            s.phase == PHASE_SHADOW || s.phase == PHASE_LEAVE || s.phase == PHASE_ENTER || s.phase == PHASE_MATERIAL;
 }
 
+// The primary ray's first sample, at the eye: where the march learns whether
+// the eye starts inside a solid or inside glass.
+SHARED_FN bool atPrimaryRayStart(TraceState s) {
+    return s.steps == 0 && s.depth == 0;
+}
+
 // What an evaluation reads of the material it returns, as bits. Only the
 // material phase's material is shaded: every hit takes one evaluation there,
 // at the hit, so the march's own material is never used. Other phases read
@@ -131,12 +137,6 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
 // procedural bump height; AO and the rest read none. A backend may leave the
 // materials out of an evaluation whose fields are 0 everywhere in the scene
 // (Program::materialReads, cpu/interpreter.inl), and gets the same floats.
-// The primary ray's first sample, at the eye: where the march learns whether
-// the eye starts inside a solid or inside glass.
-SHARED_FN bool atPrimaryRayStart(TraceState s) {
-    return s.steps == 0 && s.depth == 0;
-}
-
 const int MATERIAL_READS_NONE = 0;
 const int MATERIAL_READS_SHADING = 1;  // the whole material
 const int MATERIAL_READS_TRANSPARENCY = 2;
