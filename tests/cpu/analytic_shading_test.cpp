@@ -227,6 +227,50 @@ TEST(AnalyticShading, AHardShadowIsTheDiscUnderTheSphere) {
     EXPECT_GT(inLight, 400);
 }
 
+// A distance formula may bound the distance loosely (a field divided by a
+// Lipschitz constant larger than it needed reads less than the distance),
+// and its shadow rays must still leave its surface: starting them a fixed
+// multiple of epsilon off it, where such a field reads under epsilon, called
+// them blocked there, and the lit side of a lumpy stone had black spots.
+TEST(AnalyticShading, AFieldBelowTheDistanceCastsNoShadowOnItsOwnLitSide) {
+    scene::Material m;
+    m.ambient = dvec3(0.1);
+    m.diffuse = dvec3(0.7, 0.6, 0.5);
+    m.specular = dvec3(0);
+    const double radius = 1.2;
+    const dvec3 lightColor(1, 0.9, 0.8);
+    for (scene::ShadowMode mode : {scene::ShadowMode::Hard, scene::ShadowMode::Soft}) {
+        SCOPED_TRACE(scene::kShadowModeNames[static_cast<int>(mode)]);
+        scene::Scene s = emptyScene(m);
+        s.render.shadows = mode;
+        s.render.epsilon = 1e-3;
+        s.lights.push_back({.direction = dvec3(0.5, 0.8, 0.3), .color = lightColor, .softness = 8});
+        Node bound = shape(NodeKind::Sdf);
+        bound.set("formula", std::string("0.4 * (length(p) - 1.2)"));
+        s.root.children.push_back(bound);
+        const dvec3 l = glm::normalize(s.lights[0].direction);
+        Render r = render(s);
+        int checked = 0;
+        double worst = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                WorldRay ray = r.ray(x, y);
+                std::optional<double> t = hitSphere(ray, dvec3(0), radius);
+                if (!t) continue;
+                dvec3 n = glm::normalize(ray.origin + ray.direction * *t);
+                // the lit side, away from the silhouette and the terminator,
+                // where the field's penumbra estimate k 0.4 d / t stays over 1
+                if (glm::dot(n, -ray.direction) < 0.25 || glm::dot(n, l) < 0.5) continue;
+                dvec3 expected = localShading(m, n, -ray.direction, l, lightColor, s.render.lighting);
+                worst = std::max(worst, largestComponent(r.color(x, y) - expected));
+                ++checked;
+            }
+        }
+        EXPECT_GT(checked, kWidth * kHeight / 16);
+        EXPECT_LT(worst, 5e-3) << checked << " pixels";
+    }
+}
+
 // The floor y = 0 against the wall x = 0: at a floor point x from the wall
 // the AO samples at heights h_i = i D / M are min(h_i, x) from the surface,
 // so ao = 1 - sum_i 2^-i (h_i - min(h_i, x)) / D (thesis, Algorithm 15).

@@ -16,8 +16,9 @@ const int MAX_TRACE_DEPTH = 6;
 // caps at 65535 (docs/toolchain-notes.md): a tree whose worst case exceeds
 // this many iterations stops there, keeping the rays it finished.
 const int RAY_TREE_ITERATION_CAP = 65000;
-// Secondary rays start this many hit epsilons off their surface (on the side
-// they travel into), so their first sample is clear of it.
+// Secondary rays start where the field reads this many hit epsilons
+// (surfaceOffset), on the side they travel into, so their first sample is
+// clear of their surface.
 const real RAY_START_OFFSET = real(3);
 
 struct RayNode {
@@ -189,7 +190,7 @@ SHARED_FN RayTree rayTreeFinishRay(RayTree tree, TraceState s, TraceSettings set
     vec3 transmitted = m.transmissionColor * m.transparency;
     vec3 reflectedWeight = tree.weight * (m.reflectionColor * m.reflectivity + transmitted * share);
     vec3 refractedWeight = tree.weight * (transmitted * (real(1) - share));
-    real offset = RAY_START_OFFSET * s.hitEpsilon;
+    real offset = surfaceOffset(s, RAY_START_OFFSET);
     real path = s.pathLength + s.t;
     int depth = s.depth + 1;
     if (!refraction.total) {

@@ -43,6 +43,7 @@ struct TraceState {
     vec3 bumpSum;       // the normal's samples of the bump height, weighted alike
     vec3 normal;        // the surface's: offsets, shadows and AO start from it
     vec3 shadingNormal; // the normal with the bump map's perturbation: lighting and secondary rays
+    real offsetScale;   // 1 over the field's slope across the surface (finishNormal): surfaceOffset
     real occlusion;     // (in the normal phase: the hit's own distance)
     real occlusionWeight;
     real ao;
@@ -67,7 +68,7 @@ SHARED_FN TraceState traceBeginRay(Ray ray, int depth, bool inside, real pathLen
     Material none = noMaterial();
     return TraceState(PHASE_MARCH, 0, 0, 0, false, ray.origin, ray.direction, real(0), real(0),
                       real(0), real(0), false, vec3(real(0)), real(0), none, vec3(real(0)), vec3(real(0)),
-                      vec3(real(0)), vec3(real(0)), real(0), real(0), real(1), 0, real(0), real(1), real(0),
+                      vec3(real(0)), vec3(real(0)), real(1), real(0), real(0), real(1), 0, real(0), real(1), real(0),
                       real(0), vec3(real(1)), vec3(real(0)), depth, inside, pathLength, real(0), 0, real(0));
 }
 
@@ -87,6 +88,10 @@ const real ENTER_DEPTH = real(0.015625);
 // How far, as a fraction of the hit epsilon, the normal's probe goes through
 // the surface: inside any surface whose radius of curvature exceeds epsilon.
 const real NORMAL_PROBE = real(0.5);
+// The least slope across a surface offsets believe (surfaceOffset): where the
+// tetrahedron's samples straddle an edge or a V their sum is short, and an
+// offset grown without bound there would step over nearby surfaces.
+const real SURFACE_SLOPE_FLOOR = real(0.25);
 // A shadow ray takes at most this many samples, however slowly its field
 // steps (8 lights x 4097 stays well under llvmpipe's 65535 back-edges).
 const int SHADOW_SAMPLE_CAP = 4096;
@@ -185,8 +190,17 @@ SHARED_FN real bumpSpacing(TraceState s) {
     return s.pixelAngle * (s.pathLength + s.t) * textureFootprintStretch(s);
 }
 
+// How far off the surface a ray starts for the field to read `epsilons`
+// hit epsilons there: a true distance reads the offset itself, a field that
+// bounds it loosely (a formula divided by more than its Lipschitz constant)
+// reads its slope times that, and a shadow ray started 2 epsilon off a
+// surface of slope 0.4 read under epsilon and was called blocked.
+SHARED_FN real surfaceOffset(TraceState s, real epsilons) {
+    return epsilons * s.hitEpsilon * s.offsetScale;
+}
+
 SHARED_FN vec3 shadowOrigin(TraceState s) {
-    return s.hitPoint + s.normal * (real(2) * s.hitEpsilon);
+    return s.hitPoint + s.normal * surfaceOffset(s, real(2));
 }
 
 SHARED_FN vec3 tracePoint(TraceState s, Light light, TraceSettings settings) {
@@ -461,6 +475,9 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
         return endMarchIfSpent(s, settings);
     }
     s.normal = normalize3(s.normalSum);
+    // the samples sum to about 4 epsilon grad d (advanceNormal)
+    s.offsetScale = real(4) * s.hitEpsilon /
+                    clamp(length3(s.normalSum), real(4) * s.hitEpsilon * SURFACE_SLOPE_FLOOR, real(4) * s.hitEpsilon);
     // with an image bump map every bump map is differentiated over the
     // material phase's wider samples (advanceMaterial), the procedural ones too
     s.shadingNormal = s.materialSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
