@@ -16,4 +16,27 @@ BackendAnalysis analyse(const SceneResult& scene, size_t backend) {
     return a;
 }
 
+std::optional<size_t> suggestedDefault(const SceneResult& scene) {
+    if (scene.results.empty()) return std::nullopt;
+    const std::vector<Measurement>& current = scene.results[0].byBackend;
+    std::optional<size_t> best;
+    double bestSeconds = 0;
+    for (size_t i = 1; i < scene.results.size(); ++i) {
+        const std::vector<Measurement>& candidate = scene.results[i].byBackend;
+        bool qualifies = true;
+        double seconds = 0;
+        for (size_t b = 0; b < candidate.size(); ++b) {
+            double allowed = std::max(kErrorTolerance, current[b].error.display.meanAbs);
+            qualifies = qualifies && candidate[b].seconds * kDefaultChangeSpeedup <= current[b].seconds &&
+                        candidate[b].error.display.meanAbs <= allowed;
+            seconds += candidate[b].seconds;
+        }
+        if (qualifies && (!best || seconds < bestSeconds)) {
+            best = i;
+            bestSeconds = seconds;
+        }
+    }
+    return best;
+}
+
 }  // namespace sdfwb::tradeoff

@@ -23,4 +23,16 @@ struct BackendAnalysis {
 
 BackendAnalysis analyse(const SceneResult& scene, size_t backend);
 
+// How much faster than the default, on every backend, a setting must be for
+// the report to suggest it as the scene's default: identical images at
+// 128x72 have measured up to 1.4 times apart, so less could be noise.
+inline constexpr double kDefaultChangeSpeedup = 1.5;
+
+// The setting the measurements suggest as the scene's default (docs/scene-defaults.md):
+// of the results at least kDefaultChangeSpeedup times faster than the default
+// on every backend and, on every backend, no further from the reference than
+// the default or kErrorTolerance, whichever is more, the one of least total
+// time. Nothing when no result qualifies.
+std::optional<size_t> suggestedDefault(const SceneResult& scene);
+
 }  // namespace sdfwb::tradeoff

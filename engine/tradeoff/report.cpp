@@ -224,6 +224,36 @@ void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
     out << "\n" << table.str() << "\n";
 }
 
+void writeSuggestedDefaults(std::ostringstream& out, const SweepResult& result) {
+    std::ostringstream table;
+    table << "| scene | suggested default |";
+    for (const std::string& backend : result.backends) table << " " << backend << " speed-up | " << backend << " err |";
+    table << "\n|---|---|";
+    for (size_t b = 0; b < result.backends.size(); ++b) table << "---|---|";
+    table << "\n";
+    int suggested = 0, measured = 0;
+    for (const SceneResult& scene : result.scenes) {
+        if (scene.results.empty()) continue;
+        ++measured;
+        std::optional<size_t> index = suggestedDefault(scene);
+        if (!index) continue;
+        ++suggested;
+        table << "| " << scene.name << " | " << scene.results[*index].setting.label << " |";
+        for (size_t b = 0; b < result.backends.size(); ++b) {
+            const Measurement& m = scene.results[*index].byBackend[b];
+            double speedup = m.seconds > 0 ? scene.results[0].byBackend[b].seconds / m.seconds : 0;
+            table << " " << format("%.2f", speedup) << " | " << format("%.3f", m.error.display.meanAbs) << " |";
+        }
+        table << "\n";
+    }
+    out << "## Defaults the measurements suggest\n\n"
+        << "A setting at least " << format("%.1f", kDefaultChangeSpeedup)
+        << "x faster than the scene's default on every backend and no further from the reference than the default "
+           "or 1/255, whichever is more (the cheapest such; docs/scene-defaults.md says which scenes take it): "
+        << suggested << " of " << measured << " scenes.\n\n";
+    if (suggested > 0) out << table.str() << "\n";
+}
+
 void writeSkipped(std::ostringstream& out, const SweepResult& result) {
     if (!result.budgetExhausted) return;
     out << "**The budget ran out**: ";
@@ -254,6 +284,7 @@ std::string writeReport(const SweepResult& result, const ReportContext& context)
            "both faster and closer to the reference; each knob is varied alone around the scene's default.\n\n";
     writeSkipped(out, result);
     writeSummary(out, result);
+    writeSuggestedDefaults(out, result);
     writeSpeedup(out, result);
     for (const SceneResult& scene : result.scenes) writeScene(out, result, scene, context);
     return out.str();
