@@ -16,8 +16,9 @@
 namespace sdfwb::tradeoff {
 namespace {
 
-// Bump when the renderer's output changes for the same scene, so stale
-// references are rendered again.
+// The key holds the shared shading code itself (sdf/glsl/), so a change to
+// it renders the references again; bump this for a change to the output
+// made elsewhere (the CPU driver, the reference's settings).
 constexpr std::string_view kReferenceVersion = "sdfwb-reference-2";
 constexpr char kMagic[8] = {'S', 'D', 'F', 'W', 'R', 'E', 'F', '2'};
 
@@ -47,11 +48,12 @@ scene::Scene referenceScene(const scene::Scene& scene, const ReferenceOptions& o
     return tight;
 }
 
-std::string referenceKey(const scene::Scene& referenceScene) {
+std::string referenceKey(const scene::Scene& referenceScene, std::string_view shadingCode) {
     scene::Scene keyed = referenceScene;
     keyed.name.clear();
     keyed.description.clear();
-    std::string text = std::string(kReferenceVersion) + "\n" + scene::serializeScene(keyed);
+    std::string text =
+        std::string(kReferenceVersion) + "\n" + std::string(shadingCode) + "\n" + scene::serializeScene(keyed);
     std::uint64_t hash = 1469598103934665603ull;  // FNV-1a
     for (unsigned char c : text) {
         hash ^= c;

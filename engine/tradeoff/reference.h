@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "image/image.h"
 #include "scene/scene.h"
+#include "sdf/glsl_sources.h"
 
 namespace sdfwb::tradeoff {
 
@@ -24,8 +26,10 @@ struct ReferenceOptions {
 scene::Scene referenceScene(const scene::Scene& scene, const ReferenceOptions& options);
 
 // Hex key of everything the reference image depends on: the reference scene
-// (without its name and description) and the reference renderer's version.
-std::string referenceKey(const scene::Scene& referenceScene);
+// (without its name and description), the shared shading code the renderer
+// runs (`shadingCode`, sdf::glslLibrary() unless a test gives another) and
+// the renderer's version.
+std::string referenceKey(const scene::Scene& referenceScene, std::string_view shadingCode = sdf::glslLibrary());
 
 // The cached frame, or nothing when the cache has no valid one of that size.
 std::optional<image::Frame> loadReference(const std::filesystem::path& cacheDir, const std::string& key, int width,

@@ -36,6 +36,7 @@ TEST(ReferenceKey, ChangesWithContentAndSettingsButNotWithNames) {
     renamed.name = "other";
     renamed.description = "words";
     EXPECT_EQ(referenceKey(renamed), key);
+    EXPECT_NE(referenceKey(s, "the shading code changed"), key);
     scene::Scene moved = s;
     moved.camera.azimuth += 1;
     EXPECT_NE(referenceKey(moved), key);
