@@ -131,6 +131,32 @@ dvec3 localShading(const scene::Material& m, dvec3 normal, dvec3 toViewer, dvec3
 
 double largestComponent(dvec3 v) { return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))); }
 
+struct ShadingCheck {
+    int checked = 0;   // pixels compared
+    double worst = 0;  // largest channel difference
+};
+
+// Each pixel whose ray meets the sphere away from its silhouette, and whose
+// exact normal n has n.l >= minLight, against the local model at n.
+ShadingCheck compareWithLocalShading(const Render& r, const scene::Material& m, dvec3 centre, double radius,
+                                     const scene::Light& light, scene::LightingModel model, double minLight) {
+    const dvec3 l = glm::normalize(light.direction);
+    ShadingCheck check;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            WorldRay ray = r.ray(x, y);
+            std::optional<double> t = hitSphere(ray, centre, radius);
+            if (!t) continue;
+            dvec3 n = glm::normalize(ray.origin + ray.direction * *t - centre);
+            if (glm::dot(n, -ray.direction) < 0.25 || glm::dot(n, l) < minLight) continue;
+            dvec3 expected = localShading(m, n, -ray.direction, l, light.color, model);
+            check.worst = std::max(check.worst, largestComponent(r.color(x, y) - expected));
+            ++check.checked;
+        }
+    }
+    return check;
+}
+
 TEST(AnalyticShading, ASphereIsShadedByTheLocalModelAtItsExactNormals) {
     scene::Material m;
     m.ambient = dvec3(0.1, 0.05, 0.02);
@@ -148,24 +174,9 @@ TEST(AnalyticShading, ASphereIsShadedByTheLocalModelAtItsExactNormals) {
         s.render.lighting = model;
         s.lights.push_back({.direction = dvec3(0.5, 0.8, 0.3), .color = lightColor, .softness = 8});
         s.root.children.push_back(sphereAt(centre, radius));
-        const dvec3 l = glm::normalize(s.lights[0].direction);
-        Render r = render(s);
-        int checked = 0;
-        double worst = 0;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
-                WorldRay ray = r.ray(x, y);
-                std::optional<double> t = hitSphere(ray, centre, radius);
-                if (!t) continue;
-                dvec3 n = glm::normalize(ray.origin + ray.direction * *t - centre);
-                if (glm::dot(n, -ray.direction) < 0.25) continue;  // the silhouette
-                dvec3 expected = localShading(m, n, -ray.direction, l, lightColor, model);
-                worst = std::max(worst, largestComponent(r.color(x, y) - expected));
-                ++checked;
-            }
-        }
-        EXPECT_GT(checked, kWidth * kHeight / 8);
-        EXPECT_LT(worst, 2e-4) << checked << " pixels";
+        ShadingCheck check = compareWithLocalShading(render(s), m, centre, radius, s.lights[0], model, -1);
+        EXPECT_GT(check.checked, kWidth * kHeight / 8);
+        EXPECT_LT(check.worst, 2e-4) << check.checked << " pixels";
     }
 }
 
@@ -248,26 +259,12 @@ TEST(AnalyticShading, AFieldBelowTheDistanceCastsNoShadowOnItsOwnLitSide) {
         Node bound = shape(NodeKind::Sdf);
         bound.set("formula", std::string("0.4 * (length(p) - 1.2)"));
         s.root.children.push_back(bound);
-        const dvec3 l = glm::normalize(s.lights[0].direction);
-        Render r = render(s);
-        int checked = 0;
-        double worst = 0;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
-                WorldRay ray = r.ray(x, y);
-                std::optional<double> t = hitSphere(ray, dvec3(0), radius);
-                if (!t) continue;
-                dvec3 n = glm::normalize(ray.origin + ray.direction * *t);
-                // the lit side, away from the silhouette and the terminator,
-                // where the field's penumbra estimate k 0.4 d / t stays over 1
-                if (glm::dot(n, -ray.direction) < 0.25 || glm::dot(n, l) < 0.5) continue;
-                dvec3 expected = localShading(m, n, -ray.direction, l, lightColor, s.render.lighting);
-                worst = std::max(worst, largestComponent(r.color(x, y) - expected));
-                ++checked;
-            }
-        }
-        EXPECT_GT(checked, kWidth * kHeight / 16);
-        EXPECT_LT(worst, 5e-3) << checked << " pixels";
+        // the lit side away from the terminator, where the field's penumbra
+        // estimate k 0.4 d / t stays over 1
+        ShadingCheck check =
+            compareWithLocalShading(render(s), m, dvec3(0), radius, s.lights[0], s.render.lighting, 0.5);
+        EXPECT_GT(check.checked, kWidth * kHeight / 16);
+        EXPECT_LT(check.worst, 5e-3) << check.checked << " pixels";
     }
 }
 
