@@ -12,4 +12,13 @@ std::string_view glslPrelude() {
            "#define libraryAtan2 formulaAtan2\n";
 }
 
+std::string sharedShadingCode() {
+    std::string text;
+    for (std::string_view part : {glslPrelude(), glslLibrary(), glslSampleDriver(), glslTextureLookup(),
+                                  glslEnvironmentLookup(), glslPruneLookup()}) {
+        text.append(part).append("\n");
+    }
+    return text;
+}
+
 }  // namespace sdfwb::sdf

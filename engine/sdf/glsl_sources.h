@@ -1,6 +1,7 @@
 #pragma once
 // The shared SDF library as GLSL text, embedded at build time from sdf/glsl/*.glsl.
 
+#include <string>
 #include <string_view>
 
 namespace sdfwb::sdf {
@@ -30,5 +31,9 @@ std::string_view glslEnvironmentLookup();
 // The prune grid's cell lookup (sdf/glsl/prune_lookup.glsl), pasted after the
 // backend's node accessor PN(i).
 std::string_view glslPruneLookup();
+
+// Every piece above in one text: what the shading the backends run depends
+// on (the reference cache keys on it).
+std::string sharedShadingCode();
 
 }  // namespace sdfwb::sdf

@@ -17,23 +17,27 @@ BackendAnalysis analyse(const SceneResult& scene, size_t backend) {
 }
 
 std::optional<size_t> suggestedDefault(const SceneResult& scene) {
-    if (scene.results.empty()) return std::nullopt;
+    if (scene.results.empty() || scene.results[0].byBackend.empty()) return std::nullopt;
     const std::vector<Measurement>& current = scene.results[0].byBackend;
     std::optional<size_t> best;
-    double bestSeconds = 0;
+    double bestSeconds = 0, bestError = 0;
     for (size_t i = 1; i < scene.results.size(); ++i) {
         const std::vector<Measurement>& candidate = scene.results[i].byBackend;
-        bool qualifies = true;
-        double seconds = 0;
-        for (size_t b = 0; b < candidate.size(); ++b) {
+        bool qualifies = candidate.size() == current.size();
+        double seconds = 0, error = 0;
+        for (size_t b = 0; qualifies && b < candidate.size(); ++b) {
             double allowed = std::max(kErrorTolerance, current[b].error.display.meanAbs);
-            qualifies = qualifies && candidate[b].seconds * kDefaultChangeSpeedup <= current[b].seconds &&
+            qualifies = candidate[b].seconds > 0 &&
+                        candidate[b].seconds * kDefaultChangeSpeedup <= current[b].seconds &&
                         candidate[b].error.display.meanAbs <= allowed;
             seconds += candidate[b].seconds;
+            error = std::max(error, candidate[b].error.display.meanAbs);
         }
-        if (qualifies && (!best || seconds < bestSeconds)) {
+        bool better = !best || seconds < bestSeconds || (seconds == bestSeconds && error < bestError);
+        if (qualifies && better) {
             best = i;
             bestSeconds = seconds;
+            bestError = error;
         }
     }
     return best;

@@ -15,10 +15,10 @@ namespace sdfwb::tradeoff {
 inline constexpr double kErrorTolerance = 1.0;
 
 struct BackendAnalysis {
-    std::vector<CostError> points;       // per result: (median seconds, mean error in levels)
-    std::vector<size_t> front;           // indices into the scene's results, by increasing time
+    std::vector<CostError> points;          // per result: (median seconds, mean error in levels)
+    std::vector<size_t> front;              // indices into the scene's results, by increasing time
     std::optional<size_t> withinTolerance;  // cheapest result within kErrorTolerance
-    bool defaultOnFront = false;         // result 0 is the scene's own setting
+    bool defaultOnFront = false;            // result 0 is the scene's own setting
 };
 
 BackendAnalysis analyse(const SceneResult& scene, size_t backend);
@@ -32,7 +32,8 @@ inline constexpr double kDefaultChangeSpeedup = 1.5;
 // of the results at least kDefaultChangeSpeedup times faster than the default
 // on every backend and, on every backend, no further from the reference than
 // the default or kErrorTolerance, whichever is more, the one of least total
-// time. Nothing when no result qualifies.
+// time (then of least error). Nothing when no result qualifies, or when a
+// result lacks a backend's measurement or measured no time.
 std::optional<size_t> suggestedDefault(const SceneResult& scene);
 
 }  // namespace sdfwb::tradeoff

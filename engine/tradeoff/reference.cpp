@@ -16,9 +16,10 @@
 namespace sdfwb::tradeoff {
 namespace {
 
-// The key holds the shared shading code itself (sdf/glsl/), so a change to
-// it renders the references again; bump this for a change to the output
-// made elsewhere (the CPU driver, the reference's settings).
+// The key holds the shared shading code itself (every sdf/glsl/ text), so a
+// change to it renders the references again; bump this for a change to the
+// output made in C++ only (cpu/interpreter.inl, program/, expr/, the
+// reference's settings).
 constexpr std::string_view kReferenceVersion = "sdfwb-reference-2";
 constexpr char kMagic[8] = {'S', 'D', 'F', 'W', 'R', 'E', 'F', '2'};
 
@@ -79,7 +80,8 @@ std::optional<image::Frame> loadReference(const std::filesystem::path& cacheDir,
     frame.color = image::Image(width, height);
     size_t pixels = frame.color.pixelCount();
     if (!readFloats(in, frame.color.rgb, 3 * pixels) || !readFloats(in, frame.steps, pixels) ||
-        !readFloats(in, frame.evaluations, pixels) || !readFloats(in, frame.coverage, pixels) || !readFloats(in, frame.depth, pixels) || in.peek() != EOF) {
+        !readFloats(in, frame.evaluations, pixels) || !readFloats(in, frame.coverage, pixels) ||
+        !readFloats(in, frame.depth, pixels) || in.peek() != EOF) {
         return std::nullopt;
     }
     return frame;
@@ -101,8 +103,7 @@ void storeReference(const std::filesystem::path& cacheDir, const std::string& ke
     io::writeTextAtomically(cacheFile(cacheDir, key), out.str());
 }
 
-std::optional<ReferenceFrame> obtainReference(const scene::Scene& referenceScene,
-                                              const std::filesystem::path& cacheDir,
+std::optional<ReferenceFrame> obtainReference(const scene::Scene& referenceScene, const std::filesystem::path& cacheDir,
                                               const std::atomic<bool>* cancel) {
     std::string key = referenceKey(referenceScene);
     int width = referenceScene.render.width, height = referenceScene.render.height;

@@ -19,7 +19,7 @@ struct ReferenceOptions {
     // epsilon and the ray weight cutoff / tightening; max steps and shadow
     // steps x tightening (up to the format's limits); max_depth at its limit
     double tightening = 10;
-    int minimumAa = 1;       // the reference uses at least this AA, and at least the scene's
+    int minimumAa = 1;  // the reference uses at least this AA, and at least the scene's
 };
 
 // `scene` at the measured size with the reference's settings.
@@ -27,9 +27,9 @@ scene::Scene referenceScene(const scene::Scene& scene, const ReferenceOptions& o
 
 // Hex key of everything the reference image depends on: the reference scene
 // (without its name and description), the shared shading code the renderer
-// runs (`shadingCode`, sdf::glslLibrary() unless a test gives another) and
-// the renderer's version.
-std::string referenceKey(const scene::Scene& referenceScene, std::string_view shadingCode = sdf::glslLibrary());
+// runs (`shadingCode`, sdf::sharedShadingCode() unless a test gives another)
+// and the renderer's version.
+std::string referenceKey(const scene::Scene& referenceScene, std::string_view shadingCode = sdf::sharedShadingCode());
 
 // The cached frame, or nothing when the cache has no valid one of that size.
 std::optional<image::Frame> loadReference(const std::filesystem::path& cacheDir, const std::string& key, int width,
@@ -44,8 +44,7 @@ struct ReferenceFrame {
 };
 
 // Loads or renders (and stores) the reference of `scene`; nothing when cancelled.
-std::optional<ReferenceFrame> obtainReference(const scene::Scene& referenceScene,
-                                              const std::filesystem::path& cacheDir,
+std::optional<ReferenceFrame> obtainReference(const scene::Scene& referenceScene, const std::filesystem::path& cacheDir,
                                               const std::atomic<bool>* cancel);
 
 }  // namespace sdfwb::tradeoff

@@ -45,6 +45,17 @@ TEST(SuggestedDefault, AllowsTheDefaultsOwnErrorWhenItIsBeyondTheTolerance) {
     EXPECT_EQ(suggestedDefault(scene), std::optional<size_t>(1));
 }
 
+TEST(SuggestedDefault, OfTwoEquallyFastSettingsIsTheCloserOne) {
+    SceneResult scene = measured({{{0.30, 0.5}}, {{0.10, 0.9}}, {{0.10, 0.3}}});
+    EXPECT_EQ(suggestedDefault(scene), std::optional<size_t>(2));
+}
+
+TEST(SuggestedDefault, IgnoresResultsWithoutTimeOrWithoutEveryBackend) {
+    EXPECT_EQ(suggestedDefault(measured({{}, {}})), std::nullopt);
+    EXPECT_EQ(suggestedDefault(measured({{{0.30, 0.5}, {0.10, 0.5}}, {{0.05, 0.5}}})), std::nullopt);
+    EXPECT_EQ(suggestedDefault(measured({{{0.30, 0.5}}, {{0.0, 0.5}}})), std::nullopt);
+}
+
 TEST(SuggestedDefault, IsNothingWhenNoSettingIsFasterByTheMargin) {
     SceneResult scene = measured({{{0.30, 0.5}}, {{0.21, 0.4}}, {{0.25, 0.1}}});
     EXPECT_EQ(suggestedDefault(scene), std::nullopt);

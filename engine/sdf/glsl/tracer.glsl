@@ -475,9 +475,13 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
         return endMarchIfSpent(s, settings);
     }
     s.normal = normalize3(s.normalSum);
-    // the samples sum to about 4 epsilon grad d (advanceNormal)
-    s.offsetScale = real(4) * s.hitEpsilon /
-                    clamp(length3(s.normalSum), real(4) * s.hitEpsilon * SURFACE_SLOPE_FLOOR, real(4) * s.hitEpsilon);
+    // The samples sum to about 4 epsilon grad d (advanceNormal). A field
+    // steeper than the distance keeps the offsets as they are: they are
+    // already clear of the surface, and a shorter one is not. (At epsilon 0,
+    // the eye on a surface in pixel mode, there is nothing to scale.)
+    real unitSlopeSum = real(4) * s.hitEpsilon;
+    real sum = length3(s.normalSum);
+    s.offsetScale = sum >= unitSlopeSum ? real(1) : unitSlopeSum / max(sum, unitSlopeSum * SURFACE_SLOPE_FLOOR);
     // with an image bump map every bump map is differentiated over the
     // material phase's wider samples (advanceMaterial), the procedural ones too
     s.shadingNormal = s.materialSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
