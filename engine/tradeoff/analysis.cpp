@@ -24,15 +24,13 @@ std::optional<size_t> suggestedDefault(const SceneResult& scene) {
     for (size_t i = 1; i < scene.results.size(); ++i) {
         const std::vector<Measurement>& candidate = scene.results[i].byBackend;
         bool qualifies = candidate.size() == current.size();
-        double seconds = 0, error = 0;
         for (size_t b = 0; qualifies && b < candidate.size(); ++b) {
             double allowed = std::max(kErrorTolerance, current[b].error.display.meanAbs);
             qualifies = candidate[b].seconds > 0 &&
                         candidate[b].seconds * kDefaultChangeSpeedup <= current[b].seconds &&
                         candidate[b].error.display.meanAbs <= allowed;
-            seconds += candidate[b].seconds;
-            error = std::max(error, candidate[b].error.display.meanAbs);
         }
+        double seconds = totalSeconds(scene.results[i]), error = worstMeanError(scene.results[i]);
         bool better = !best || seconds < bestSeconds || (seconds == bestSeconds && error < bestError);
         if (qualifies && better) {
             best = i;

@@ -19,6 +19,11 @@ std::string format(const char* pattern, double value) {
 
 std::string milliseconds(double seconds) { return format("%.1f", seconds * 1000.0); }
 
+// How many times faster `to` ran than `from` (0 when `to` took no time).
+double speedup(const Measurement& from, const Measurement& to) {
+    return to.seconds > 0 ? from.seconds / to.seconds : 0;
+}
+
 std::string describeSettings(const scene::Scene& s) {
     const scene::RenderSettings& r = s.render;
     std::ostringstream out;
@@ -36,7 +41,8 @@ double medianOf(std::vector<double> v) {
 }
 
 constexpr const char* kRowHeader =
-    "| setting | backend | ms | x default | mean steps | max steps | mean evals | mean err | max err | PSNR dB | % > 1/255 | "
+    "| setting | backend | ms | x default | mean steps | max steps | mean evals | mean err | max err | PSNR dB | % > "
+    "1/255 | "
     "% > 8/255 | hit mismatch % | depth err % | |\n"
     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
@@ -53,11 +59,11 @@ std::string row(const SceneResult& scene, size_t index, size_t backend, const st
     for (const std::string& mark : marks) markText += (markText.empty() ? "" : ", ") + mark;
     std::ostringstream out;
     out << "| " << scene.results[index].setting.label << " | " << backendName << " | " << milliseconds(m.seconds)
-        << " | " << format("%.2f", m.seconds > 0 ? d.seconds / m.seconds : 0) << " | " << format("%.1f", m.meanSteps)
-        << " | " << format("%.0f", m.maxSteps) << " | " << format("%.1f", m.meanEvaluations) << " | "
-        << format("%.3f", c.meanAbs) << " | "
-        << format("%.0f", c.maxAbs) << " | " << (std::isinf(c.psnr) ? std::string("inf") : format("%.1f", c.psnr))
-        << " | " << format("%.2f", c.percentAbove1) << " | " << format("%.2f", c.percentAbove8) << " | "
+        << " | " << format("%.2f", speedup(d, m)) << " | " << format("%.1f", m.meanSteps) << " | "
+        << format("%.0f", m.maxSteps) << " | " << format("%.1f", m.meanEvaluations) << " | "
+        << format("%.3f", c.meanAbs) << " | " << format("%.0f", c.maxAbs) << " | "
+        << (std::isinf(c.psnr) ? std::string("inf") : format("%.1f", c.psnr)) << " | "
+        << format("%.2f", c.percentAbove1) << " | " << format("%.2f", c.percentAbove8) << " | "
         << format("%.3f", 100.0 * m.error.hitMismatch) << " | " << format("%.3f", 100.0 * m.error.depthError) << " | "
         << markText << " |\n";
     return out.str();
@@ -101,9 +107,9 @@ void writeScene(std::ostringstream& out, const SweepResult& result, const SceneR
 }
 
 struct BackendTotals {
-    int measured = 0;       // scenes with a measured default
+    int measured = 0;  // scenes with a measured default
     int defaultOnFront = 0;
-    int defaultWithin = 0;  // defaults within 1/255 of the reference
+    int defaultWithin = 0;         // defaults within 1/255 of the reference
     std::vector<double> speedups;  // default time / cheapest-within-1/255 time
 };
 
@@ -128,10 +134,10 @@ void writeSummary(std::ostringstream& out, const SweepResult& result) {
                 continue;
             }
             const Measurement& c = scene.results[*a.withinTolerance].byBackend[b];
-            double speedup = c.seconds > 0 ? d.seconds / c.seconds : 0;
-            t.speedups.push_back(speedup);
+            double ratio = speedup(d, c);
+            t.speedups.push_back(ratio);
             table << scene.results[*a.withinTolerance].setting.label << " | " << milliseconds(c.seconds) << " | "
-                  << format("%.2f", speedup) << " |\n";
+                  << format("%.2f", ratio) << " |\n";
         }
     }
     out << "## Summary\n\n";
@@ -139,9 +145,8 @@ void writeSummary(std::ostringstream& out, const SweepResult& result) {
         const BackendTotals& t = totals[b];
         out << "- " << result.backends[b] << ": " << t.measured << " scenes measured; the default is on the front in "
             << t.defaultOnFront << ", within 1/255 mean error of the reference in " << t.defaultWithin
-            << "; a setting within 1/255 exists in " << t.speedups.size()
-            << ", and the cheapest such is a median " << format("%.2f", medianOf(t.speedups))
-            << "x faster than the default.\n";
+            << "; a setting within 1/255 exists in " << t.speedups.size() << ", and the cheapest such is a median "
+            << format("%.2f", medianOf(t.speedups)) << "x faster than the default.\n";
     }
     out << "\n" << table.str() << "\n";
 }
@@ -201,7 +206,7 @@ void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
                 if (label.rfind("tuned:", 0) == 0) label = label.substr(7);
                 table << " | " << label << " | " << cells(m);
                 (ratios[b].*steps).push_back(m.meanSteps > 0 ? plain.meanSteps / m.meanSteps : 0);
-                (ratios[b].*time).push_back(m.seconds > 0 ? plain.seconds / m.seconds : 0);
+                (ratios[b].*time).push_back(speedup(plain, m));
             }
             table << " |\n";
         }
@@ -215,11 +220,11 @@ void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
            "over relaxed, medians over the scenes that have such a setting.\n\n";
     for (size_t b = 0; b < result.backends.size(); ++b) {
         const Ratios& r = ratios[b];
-        out << "- " << result.backends[b] << ": relaxation alone (" << r.aloneSteps.size() << " scenes): "
-            << format("%.2f", medianOf(r.aloneSteps)) << "x fewer steps, " << format("%.2f", medianOf(r.aloneTime))
-            << "x faster; tuned and relaxed (" << r.tunedSteps.size() << " scenes): "
-            << format("%.2f", medianOf(r.tunedSteps)) << "x fewer steps, " << format("%.2f", medianOf(r.tunedTime))
-            << "x faster.\n";
+        out << "- " << result.backends[b] << ": relaxation alone (" << r.aloneSteps.size()
+            << " scenes): " << format("%.2f", medianOf(r.aloneSteps)) << "x fewer steps, "
+            << format("%.2f", medianOf(r.aloneTime)) << "x faster; tuned and relaxed (" << r.tunedSteps.size()
+            << " scenes): " << format("%.2f", medianOf(r.tunedSteps)) << "x fewer steps, "
+            << format("%.2f", medianOf(r.tunedTime)) << "x faster.\n";
     }
     out << "\n" << table.str() << "\n";
 }
@@ -241,8 +246,8 @@ void writeSuggestedDefaults(std::ostringstream& out, const SweepResult& result) 
         table << "| " << scene.name << " | " << scene.results[*index].setting.label << " |";
         for (size_t b = 0; b < result.backends.size(); ++b) {
             const Measurement& m = scene.results[*index].byBackend[b];
-            double speedup = m.seconds > 0 ? scene.results[0].byBackend[b].seconds / m.seconds : 0;
-            table << " " << format("%.2f", speedup) << " | " << format("%.3f", m.error.display.meanAbs) << " |";
+            table << " " << format("%.2f", speedup(scene.results[0].byBackend[b], m)) << " | "
+                  << format("%.3f", m.error.display.meanAbs) << " |";
         }
         table << "\n";
     }

@@ -17,7 +17,9 @@ double median(std::vector<double> values) {
     return n == 0 ? 0.0 : n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-bool sameImage(const image::Frame& a, const image::Frame& b) { return a.color.rgb == b.color.rgb && a.steps == b.steps; }
+bool sameImage(const image::Frame& a, const image::Frame& b) {
+    return a.color.rgb == b.color.rgb && a.steps == b.steps;
+}
 
 struct TimedFrame {
     image::Frame frame;
@@ -104,30 +106,18 @@ scene::Scene atMeasuredSize(scene::Scene scene, const SweepOptions& options) {
 // The one-knob results combined (sweep_plan.h: tunedSetting).
 std::optional<Setting> tuned(const SceneResult& sr, const SweepOptions& options) {
     if (sr.results.size() < 2) return std::nullopt;
-    auto seconds = [](const SettingResult& r) {
-        double sum = 0;
-        for (const Measurement& m : r.byBackend) sum += m.seconds;
-        return sum;
-    };
-    auto error = [](const SettingResult& r) {
-        double worst = 0;
-        for (const Measurement& m : r.byBackend) worst = std::max(worst, m.error.display.meanAbs);
-        return worst;
-    };
     std::vector<TuningCandidate> candidates;
-    for (const SettingResult& r : sr.results) candidates.push_back({&r.setting, seconds(r), error(r)});
-    return tunedSetting(sr.scene, candidates, seconds(sr.results[0]), error(sr.results[0]), options.tuningSlack);
+    for (const SettingResult& r : sr.results) candidates.push_back({&r.setting, totalSeconds(r), worstMeanError(r)});
+    return tunedSetting(sr.scene, candidates, totalSeconds(sr.results[0]), worstMeanError(sr.results[0]),
+                        options.tuningSlack);
 }
 
 // What the workbench reads back (measurements.h).
 SceneMeasurements measurementsOf(const SceneResult& sr, const std::vector<std::string>& backends) {
     SceneMeasurements m{backends, {}};
     for (const SettingResult& r : sr.results) {
-        MeasuredPoint p{r.setting.scene.render, {}, 0};
-        for (const Measurement& b : r.byBackend) {
-            p.seconds.push_back(b.seconds);
-            p.meanError = std::max(p.meanError, b.error.display.meanAbs);
-        }
+        MeasuredPoint p{r.setting.scene.render, {}, worstMeanError(r)};
+        for (const Measurement& b : r.byBackend) p.seconds.push_back(b.seconds);
         m.points.push_back(std::move(p));
     }
     return m;
@@ -141,6 +131,18 @@ int largestAa(const SweepPlan& plan) {
 }
 
 }  // namespace
+
+double totalSeconds(const SettingResult& result) {
+    double sum = 0;
+    for (const Measurement& m : result.byBackend) sum += m.seconds;
+    return sum;
+}
+
+double worstMeanError(const SettingResult& result) {
+    double worst = 0;
+    for (const Measurement& m : result.byBackend) worst = std::max(worst, m.error.display.meanAbs);
+    return worst;
+}
 
 SweepResult runSweep(const std::vector<SceneInput>& scenes, const std::vector<KnobRequest>& knobs,
                      const std::vector<render::Backend*>& backends, const SweepOptions& options) {

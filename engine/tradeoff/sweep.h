@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "render/render_backend.h"
 #include "tradeoff/frame_error.h"
 #include "tradeoff/reference.h"
 #include "tradeoff/sweep_plan.h"
-#include "render/render_backend.h"
 
 namespace sdfwb::tradeoff {
 
@@ -27,7 +27,7 @@ struct SceneInput {
 struct SweepProgress {
     int scenesDone = 0;
     int scenesTotal = 0;
-    int settingsDone = 0;   // over all scenes, skipped ones included
+    int settingsDone = 0;  // over all scenes, skipped ones included
     int settingsTotal = 0;
     double elapsedSeconds = 0;
     double secondsLeft = -1;  // estimate; negative until one setting was measured
@@ -63,21 +63,26 @@ struct SettingResult {
     std::vector<Measurement> byBackend;  // in the order of the sweep's backends
 };
 
+// Over the result's backends: the sum of their times, and the largest of
+// their mean display errors (what the tuning and the suggested default weigh).
+double totalSeconds(const SettingResult& result);
+double worstMeanError(const SettingResult& result);
+
 struct SceneResult {
     std::string name;
     scene::Scene scene;  // at the measured size
     scene::Scene reference;
     bool referenceCached = false;
     double referenceSeconds = 0;
-    std::vector<SettingResult> results;   // [0] is the default when anything was measured
-    std::vector<SkippedKnob> notSwept;    // inert knobs, and knobs whose cheapest value changed nothing
-    std::vector<std::string> skipped;     // settings left out by the budget
+    std::vector<SettingResult> results;  // [0] is the default when anything was measured
+    std::vector<SkippedKnob> notSwept;   // inert knobs, and knobs whose cheapest value changed nothing
+    std::vector<std::string> skipped;    // settings left out by the budget
 };
 
 struct SweepResult {
     std::vector<std::string> backends;
     std::vector<SceneResult> scenes;
-    bool cancelled = false;       // interrupted: the result is partial
+    bool cancelled = false;  // interrupted: the result is partial
     bool budgetExhausted = false;
     double seconds = 0;
 };
