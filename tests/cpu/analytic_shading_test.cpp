@@ -268,6 +268,27 @@ TEST(AnalyticShading, AFieldBelowTheDistanceCastsNoShadowOnItsOwnLitSide) {
     }
 }
 
+// The same loose field's ambient occlusion: along the normal of a convex
+// surface nothing occludes (ao = 1), and a field reading 0.4 of the distance
+// there darkened the whole sphere (ao 0.79 with these 5 samples).
+TEST(AnalyticShading, AFieldBelowTheDistanceDoesNotOccludeItsOwnConvexSide) {
+    scene::Material m;
+    m.ambient = dvec3(0.1);
+    m.diffuse = dvec3(0.7, 0.6, 0.5);
+    m.specular = dvec3(0);
+    scene::Scene s = emptyScene(m);
+    s.render.epsilon = 1e-3;
+    s.render.aoSamples = 5;
+    s.render.aoDistance = 0.5;
+    s.lights.push_back({.direction = dvec3(0.5, 0.8, 0.3), .color = dvec3(1, 0.9, 0.8), .softness = 8});
+    Node bound = shape(NodeKind::Sdf);
+    bound.set("formula", std::string("0.4 * (length(p) - 1.2)"));
+    s.root.children.push_back(bound);
+    ShadingCheck check = compareWithLocalShading(render(s), m, dvec3(0), 1.2, s.lights[0], s.render.lighting, -1);
+    EXPECT_GT(check.checked, kWidth * kHeight / 8);
+    EXPECT_LT(check.worst, 5e-3) << check.checked << " pixels";
+}
+
 // The floor y = 0 against the wall x = 0: at a floor point x from the wall
 // the AO samples at heights h_i = i D / M are min(h_i, x) from the surface,
 // so ao = 1 - sum_i 2^-i (h_i - min(h_i, x)) / D (thesis, Algorithm 15).

@@ -6,6 +6,7 @@
 
 #include "cpu/cpu_renderer.h"
 #include "program/compile_scene.h"
+#include "scene/scene.h"
 #include "scene/scene_json.h"
 #include "support/source_tree.h"
 
@@ -41,6 +42,46 @@ TEST(RayTreeRender, AMirrorFloorShowsTheBackgroundTimesKpsMps) {
             EXPECT_NEAR(c.rgb[static_cast<size_t>(3 * i + 1)], 0.75 * 0.5 * 0.4, 1e-6);
             EXPECT_NEAR(c.rgb[static_cast<size_t>(3 * i + 2)], 0.75 * 0.25 * 0.6, 1e-6);
         }
+    }
+}
+
+// A mirror whose field bounds the distance loosely (slope 0.3: a sphere's
+// distance times 0.3) sends its reflected rays off its own surface, where
+// the field reads less than the offset they start at: nothing but the
+// reflected background may show on it, in float and in double.
+TEST(RayTreeRender, AMirrorOnALooseBoundReflectsTheBackground) {
+    scene::Scene s;
+    s.lights.clear();
+    s.environment.ambient = glm::dvec3(0);
+    s.environment.background = glm::dvec3(0.2, 0.4, 0.6);
+    s.environment.ground.enabled = false;
+    scene::Material mirror;
+    mirror.name = "mirror";
+    mirror.ambient = mirror.diffuse = mirror.specular = glm::dvec3(0);
+    mirror.reflectivity = 0.75;
+    mirror.reflectionColor = glm::dvec3(1.0, 0.5, 0.25);
+    s.materials.push_back(mirror);
+    scene::Node ball = scene::Node::make(scene::NodeKind::Sdf);
+    ball.set("formula", std::string("0.3 * (length(p) - 1)"));
+    ball.set("material", std::string("mirror"));
+    s.root.children.push_back(ball);
+    s.render.epsilon = 1e-3;
+    s.camera = {.target = {0, 0, 0}, .azimuth = 0, .elevation = 20, .distance = 4, .fov = 40};
+    program::Program p = program::compileScene(s, {.width = 32, .height = 32, .aa = 1});
+    ASSERT_TRUE(p.secondaryRays);
+    const glm::dvec3 reflected = 0.75 * mirror.reflectionColor * s.environment.background;
+    for (render::Precision precision : {render::Precision::Float, render::Precision::Double}) {
+        render::RenderOutcome outcome = cpu::renderCpu(p, {.precision = precision});
+        const image::Image& c = outcome.frame.color;
+        int onMirror = 0;
+        for (int i = 0; i < 32 * 32; ++i) {
+            if (outcome.frame.coverage[static_cast<size_t>(i)] < 1.0f) continue;
+            ++onMirror;
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_NEAR(c.rgb[static_cast<size_t>(3 * i + k)], reflected[k], 1e-5) << "pixel " << i;
+            }
+        }
+        EXPECT_GT(onMirror, 32 * 32 / 8);
     }
 }
 

@@ -43,7 +43,7 @@ struct TraceState {
     vec3 bumpSum;       // the normal's samples of the bump height, weighted alike
     vec3 normal;        // the surface's: offsets, shadows and AO start from it
     vec3 shadingNormal; // the normal with the bump map's perturbation: lighting and secondary rays
-    real offsetScale;   // 1 over the field's slope across the surface (finishNormal): surfaceOffset
+    real offsetScale;   // 1 over the field's slope across the surface (finishNormal): surfaceOffset, AO
     real occlusion;     // (in the normal phase: the hit's own distance)
     real occlusionWeight;
     real ao;
@@ -542,10 +542,14 @@ SHARED_FN TraceState advanceNormal(TraceState s, Sample field, TraceSettings set
 }
 
 // Normal-sampled ambient occlusion (Evans 2006; thesis, Algorithm 15):
-// ao = 1 - sum_i 2^-i (h_i - d_i) / D with h_i = i D / M.
+// ao = 1 - sum_i 2^-i (h_i - d_i) / D with h_i = i D / M. A field that
+// bounds the distance loosely reads about its slope times h_i along an open
+// normal, and a convex surface of slope 0.4 came out occluded to 0.76
+// (M = 4): d_i is read in the surface's own scale, as its offsets are
+// (surfaceOffset).
 SHARED_FN TraceState advanceOcclusion(TraceState s, Sample field, TraceSettings settings) {
     real h = real(s.counter + 1) / real(settings.aoSamples) * settings.aoDistance;
-    s.occlusion = s.occlusion + s.occlusionWeight * (h - field.d);
+    s.occlusion = s.occlusion + s.occlusionWeight * (h - field.d * s.offsetScale);
     s.occlusionWeight = s.occlusionWeight * real(0.5);
     s.counter = s.counter + 1;
     if (s.counter < settings.aoSamples) {
