@@ -1,5 +1,8 @@
 #include "app/gui/view_choice.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace sdfwb::app::gui {
 
 bool refinesInPlace(const ImageContent& texture, std::uint64_t state) { return texture.state == state; }
@@ -31,6 +34,16 @@ LanePlan planLanes(Source wanted, bool compare, bool glReady, bool glFailed) {
     }
     if (glFailed) plan.renders[static_cast<int>(Source::Gl)] = false;
     return plan;
+}
+
+double previewSecondsPerSample(double lastStage, double wholeProgram, bool geometryChanged) {
+    return geometryChanged ? std::max(lastStage, wholeProgram) : lastStage;
+}
+
+int previewScale(double pixels, double secondsPerSample) {
+    if (secondsPerSample <= 0 || pixels <= 0) return 4;
+    double scale = std::ceil(std::sqrt(pixels * secondsPerSample / kPreviewSeconds));
+    return static_cast<int>(std::clamp(scale, 2.0, static_cast<double>(kCoarsestPreview)));
 }
 
 }  // namespace sdfwb::app::gui

@@ -62,4 +62,20 @@ struct LanePlan {
 };
 LanePlan planLanes(Source wanted, bool compare, bool glReady, bool glFailed);
 
+// A preview's price per sample (pixel x AA sub-sample). A lane measures two:
+// its last stage's, and its last render of the whole program (a large
+// scene's preview drawn before the prune grid of its new geometry is built,
+// which evaluates every primitive at every step: many times the pruned
+// stage's cost). After an edit of the geometry
+// the preview is priced as a whole-program render, once one was measured;
+// after a camera, material or view change the grid is still there.
+double previewSecondsPerSample(double lastStage, double wholeProgram, bool geometryChanged);
+
+// The scale (width / scale x height / scale) of the largest preview costing
+// about kPreviewSeconds at that price; at least half resolution, at most
+// 1/kCoarsestPreview, and a quarter while nothing is measured.
+inline constexpr double kPreviewSeconds = 0.05;
+inline constexpr int kCoarsestPreview = 32;
+int previewScale(double pixels, double secondsPerSample);
+
 }  // namespace sdfwb::app::gui

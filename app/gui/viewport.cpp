@@ -6,13 +6,13 @@
 #include "cpu/cpu_backend.h"
 #include "gl/gl_backend.h"
 #include "program/compile_scene.h"
+#include "prune/prune_grid.h"
 
 namespace sdfwb::app::gui {
 
 namespace {
 constexpr int kDefaultTileSize = 64;   // pixels per side of one GL draw, before any measurement
 constexpr double kDrawBudget = 0.006;  // seconds one GL draw should take at most
-constexpr double kPreviewCost = 0.05;  // seconds a preview image should take
 
 std::uint64_t mix(std::uint64_t seed, std::uint64_t value) {
     return seed ^ (value + 0x9e3779b97f4a7c15ull + (seed << 6) + (seed >> 2));
@@ -34,6 +34,7 @@ Viewport::~Viewport() = default;
 
 void Viewport::plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
                     bool interacting) {
+    geometryChanged_ = !scene_ || scene.root != scene_->root || scene.environment.ground != scene_->environment.ground;
     scene_ = std::make_shared<const scene::Scene>(scene);
     compare_ = ui.compare != ui::CompareMode::Off;
     wanted_ = ui.backend == ui::ViewBackend::Gl ? Source::Gl : Source::Cpu;
@@ -116,7 +117,7 @@ Viewport::Next Viewport::nextProgram(Lane& lane) {
     if (lane.stage < stages_.size() && stages_[lane.stage].preview && lane.content.state == state_) ++lane.stage;
     if (lane.stage >= stages_.size()) return Next::None;
     const Stage& stage = stages_[lane.stage];
-    int scale = stage.preview ? previewScale(lane) : 1;
+    int scale = stage.preview ? previewScale(static_cast<double>(width_) * height_, secondsPerSample(lane, stage)) : 1;
     program::CompileOptions options;
     options.width = std::max(1, width_ / scale);
     options.height = std::max(1, height_ / scale);
@@ -159,10 +160,12 @@ void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
         render::Readiness readiness = lane.backend->readiness(*lane.next);
         if (!readiness.ready) return;
         if (lane.source == Source::Gl) error_.clear();
+        const Stage& stage = stages_[lane.stage];
         render::RenderControl control;
-        control.tileSize = tileSize(lane);
+        control.tileSize = tileSize(lane, stage);
         // a preview of a large scene is drawn before its grid is built
-        control.waitForPruneGrid = !stages_[lane.stage].preview;
+        control.waitForPruneGrid = !stage.preview;
+        lane.rendersWhole = stage.preview && !prune::pruneGridIfBuilt(*lane.next).has_value();
         try {
             lane.job = lane.backend->startProgressive(*lane.next, control);
         } catch (const std::exception& error) {
@@ -208,6 +211,7 @@ void Viewport::finishStage(Lane& lane) {
     double samples = static_cast<double>(done.width) * done.height * done.aa * done.aa;
     double seconds = job.deviceSeconds() > 0 ? job.deviceSeconds() : job.seconds();
     lane.secondsPerSample = seconds / std::max(1.0, samples);
+    if (lane.rendersWhole) lane.secondsPerWholeSample = lane.secondsPerSample;
     if (lane.source == view(compare_ ? Source::Gl : wanted_).shown) {
         stats_.width = frame.color.width;
         stats_.height = frame.color.height;
@@ -232,20 +236,17 @@ void Viewport::finishStage(Lane& lane) {
     lane.job.reset();
 }
 
-int Viewport::previewScale(const Lane& lane) const {
-    // the largest preview whose cost, as measured on the lane's last stage,
-    // is about kPreviewCost; at least half resolution
-    double pixels = static_cast<double>(width_) * height_;
-    if (lane.secondsPerSample <= 0 || pixels <= 0) return 4;
-    double scale = std::ceil(std::sqrt(pixels * lane.secondsPerSample / kPreviewCost));
-    return std::clamp(static_cast<int>(scale), 2, 16);
+double Viewport::secondsPerSample(const Lane& lane, const Stage& stage) const {
+    if (!stage.preview) return lane.secondsPerSample;
+    return previewSecondsPerSample(lane.secondsPerSample, lane.secondsPerWholeSample, geometryChanged_);
 }
 
-int Viewport::tileSize(const Lane& lane) const {
+int Viewport::tileSize(const Lane& lane, const Stage& stage) const {
     if (lane.source != Source::Gl) return 0;  // the CPU backend's default: its tiles run on workers
-    if (lane.secondsPerSample <= 0) return kDefaultTileSize;
+    double price = secondsPerSample(lane, stage);
+    if (price <= 0) return kDefaultTileSize;
     // a square tile whose single sub-sample pass costs about kDrawBudget
-    int side = static_cast<int>(std::sqrt(kDrawBudget / lane.secondsPerSample));
+    int side = static_cast<int>(std::sqrt(kDrawBudget / price));
     return std::clamp(side / 16 * 16, 16, 256);
 }
 

@@ -32,14 +32,14 @@
 namespace sdfwb::app::gui {
 
 struct ViewportStats {
-    int width = 0, height = 0;           // of the image being shown
+    int width = 0, height = 0;  // of the image being shown
     int aa = 1;
-    double renderSeconds = 0;            // of the last finished stage
-    double compileSeconds = 0;           // of the last program built
-    double gpuSeconds = 0;               // GL timer queries of the last finished GL stage
-    image::FrameStats frame;             // of the last finished stage
-    std::string status;                  // "compiling shader", "refining 40%", "done"
-    int compiles = 0;                    // programs built for the viewport
+    double renderSeconds = 0;   // of the last finished stage
+    double compileSeconds = 0;  // of the last program built
+    double gpuSeconds = 0;      // GL timer queries of the last finished GL stage
+    image::FrameStats frame;    // of the last finished stage
+    std::string status;         // "compiling shader", "refining 40%", "done"
+    int compiles = 0;           // programs built for the viewport
 };
 
 // What one view slot draws: a texture and what to say over it ("" or a note
@@ -100,22 +100,27 @@ private:
               texture(gl),
               // the worker also reads the environment's images, which the GL
               // backend would otherwise read on the UI thread at its first render
-              compiler(std::make_unique<ui::ProgramCompiler<LaneCompile>>(compiles, program::compileSceneReadingImages)) {}
+              compiler(
+                  std::make_unique<ui::ProgramCompiler<LaneCompile>>(compiles, program::compileSceneReadingImages)) {}
         Source source;
         std::unique_ptr<render::Backend> backend;
         DisplayTexture texture;
         ImageContent content;
         std::unique_ptr<render::ProgressiveRender> job;
-        size_t stage = 0;                     // next stage to render (or the one rendering)
+        size_t stage = 0;                      // next stage to render (or the one rendering)
         std::optional<program::Program> next;  // the program of that stage, once compiled
-        int scale = 1;                        // of that program: width/scale x height/scale
-        std::uint64_t nextState = 0;          // of that program: state_, or during a drag an earlier one
+        int scale = 1;                         // of that program: width/scale x height/scale
+        std::uint64_t nextState = 0;           // of that program: state_, or during a drag an earlier one
         // makes `next` on the viewport's compile worker
         std::unique_ptr<ui::ProgramCompiler<LaneCompile>> compiler;
-        std::optional<image::Frame> final;    // the last stage's frame of the current state
+        std::optional<image::Frame> final;  // the last stage's frame of the current state
         // Measured cost of one sample (pixel x AA sub-sample), which sizes
-        // previews and, on GL, tiles so that one draw stays inside the budget.
+        // previews and, on GL, tiles so that one draw stays inside the budget:
+        // the last stage's, and the last whole-program render's
+        // (previewSecondsPerSample).
         double secondsPerSample = 0;
+        double secondsPerWholeSample = 0;
+        bool rendersWhole = false;  // the running job evaluates the whole program: no prune grid yet
     };
 
     void plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
@@ -129,8 +134,9 @@ private:
     Next nextProgram(Lane& lane);
     void advance(Lane& lane, bool renders, double budgetSeconds);
     void finishStage(Lane& lane);
-    int previewScale(const Lane& lane) const;
-    int tileSize(const Lane& lane) const;
+    // What one sample of the lane's stage is expected to cost.
+    double secondsPerSample(const Lane& lane, const Stage& stage) const;
+    int tileSize(const Lane& lane, const Stage& stage) const;
     SlotView view(Source wanted) const;
     SlotImage slot(Source wanted) const;
     Lane& laneOf(Source source) { return lanes_[static_cast<int>(source)]; }
@@ -138,18 +144,19 @@ private:
 
     glcontext::GlContext& context_;
     jobs::JobQueue compiles_{1};  // the lanes' scene -> program compiles, one at a time
-    std::vector<Lane> lanes_;  // indexed by Source
+    std::vector<Lane> lanes_;     // indexed by Source
     DisplayTexture differenceTexture_;
     std::uint64_t differenceState_ = 0;
 
     // The request being served.
     std::uint64_t requestKey_ = 0;
-    std::uint64_t state_ = 0;  // see view_choice.h
+    std::uint64_t state_ = 0;                    // see view_choice.h
     std::shared_ptr<const scene::Scene> scene_;  // shared with the compiles asked for it
     std::vector<Stage> stages_;
     int width_ = 0, height_ = 0;
     Source wanted_ = Source::Gl;
     bool compare_ = false, heat_ = false, interacting_ = false;
+    bool geometryChanged_ = false;  // since the last request: a new prune grid is needed
     LanePlan lanePlan_;
 
     std::optional<image::Comparison> comparison_;

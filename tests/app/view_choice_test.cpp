@@ -41,7 +41,7 @@ TEST(ViewChoice, AnEarlierStateIsMarkedOutdatedUnlessTheUserDrags) {
 }
 
 TEST(ViewChoice, ADragDrawsTheFreshestCompiledStateAsItsPreview) {
-    constexpr std::uint64_t kDragged = 9;  // a state compiled while the drag asks for newer ones
+    constexpr std::uint64_t kDragged = 9;                       // a state compiled while the drag asks for newer ones
     EXPECT_TRUE(drawsCompiled(true, kNow, kOld, false, true));  // what the lane asked for
     EXPECT_TRUE(drawsCompiled(false, kDragged, kOld, true, true));
     // nothing newer than the texture holds, or an image the resized view no longer fits
@@ -51,9 +51,7 @@ TEST(ViewChoice, ADragDrawsTheFreshestCompiledStateAsItsPreview) {
     EXPECT_FALSE(drawsCompiled(false, kDragged, kOld, false, true));
 }
 
-TEST(ViewChoice, NothingRenderedYetIsSaid) {
-    EXPECT_EQ(choose(Source::Gl, {}, {}).note, Note::Empty);
-}
+TEST(ViewChoice, NothingRenderedYetIsSaid) { EXPECT_EQ(choose(Source::Gl, {}, {}).note, Note::Empty); }
 
 TEST(ViewChoice, TilesRefineOnlyAnImageOfTheSameState) {
     EXPECT_TRUE(refinesInPlace({kNow, 0}, kNow));   // the preview refined to full size
@@ -90,6 +88,32 @@ TEST(ViewChoice, CompareRendersBothAndTheCpuViewOnlyTheCpu) {
     LanePlan cpu = planLanes(Source::Cpu, false, false, false);
     EXPECT_FALSE(cpu.renders[0]);
     EXPECT_TRUE(cpu.renders[1]);
+}
+
+TEST(ViewChoice, APreviewCostsAboutItsBudgetAtTheMeasuredPrice) {
+    const double pixels = 882.0 * 704.0;
+    EXPECT_EQ(previewScale(pixels, 0), 4);     // nothing measured yet
+    EXPECT_EQ(previewScale(pixels, 1e-9), 2);  // a cheap scene: half resolution at most
+    for (double price : {1e-7, 1e-6, 1e-5}) {
+        int scale = previewScale(pixels, price);
+        double seconds = pixels / (scale * scale) * price;
+        EXPECT_LE(seconds, kPreviewSeconds) << price;
+        // the next finer scale would be over the budget
+        if (scale > 2) {
+            EXPECT_GT(pixels / ((scale - 1) * (scale - 1)) * price, kPreviewSeconds) << price;
+        }
+    }
+    EXPECT_EQ(previewScale(pixels, 1e-3), kCoarsestPreview);  // the whole molecule, 0.6 ms a sample
+}
+
+// After an edit of the geometry the prune grid is rebuilt while the preview
+// evaluates the whole program: its price, not the pruned stage's, sizes it.
+TEST(ViewChoice, AGeometryEditIsPricedAsAWholeProgramRender) {
+    EXPECT_EQ(previewSecondsPerSample(2e-5, 6e-4, true), 6e-4);
+    EXPECT_EQ(previewSecondsPerSample(2e-5, 6e-4, false), 2e-5);  // a camera move keeps the grid
+    EXPECT_EQ(previewSecondsPerSample(2e-5, 0, true), 2e-5);      // no whole render measured yet
+    // a small scene has no grid: whole and last agree, and the larger counts
+    EXPECT_EQ(previewSecondsPerSample(3e-6, 2e-6, true), 3e-6);
 }
 
 }  // namespace
