@@ -41,7 +41,7 @@ double previewSecondsPerSample(double lastStage, double wholeProgram, bool geome
 }
 
 int previewScale(double pixels, double secondsPerSample) {
-    if (secondsPerSample <= 0 || pixels <= 0) return 4;
+    if (secondsPerSample <= 0 || pixels <= 0) return kCoarsestPreview;
     double scale = std::ceil(std::sqrt(pixels * secondsPerSample / kPreviewSeconds));
     return static_cast<int>(std::clamp(scale, 2.0, static_cast<double>(kCoarsestPreview)));
 }

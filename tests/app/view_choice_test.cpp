@@ -92,8 +92,8 @@ TEST(ViewChoice, CompareRendersBothAndTheCpuViewOnlyTheCpu) {
 
 TEST(ViewChoice, APreviewCostsAboutItsBudgetAtTheMeasuredPrice) {
     const double pixels = 882.0 * 704.0;
-    EXPECT_EQ(previewScale(pixels, 0), 4);     // nothing measured yet
-    EXPECT_EQ(previewScale(pixels, 1e-9), 2);  // a cheap scene: half resolution at most
+    EXPECT_EQ(previewScale(pixels, 0), kCoarsestPreview);  // nothing measured yet
+    EXPECT_EQ(previewScale(pixels, 1e-9), 2);              // a cheap scene: half resolution at most
     for (double price : {1e-7, 1e-6, 1e-5}) {
         int scale = previewScale(pixels, price);
         double seconds = pixels / (scale * scale) * price;
