@@ -36,8 +36,8 @@ LanePlan planLanes(Source wanted, bool compare, bool glReady, bool glFailed) {
     return plan;
 }
 
-double previewSecondsPerSample(double lastStage, double wholeProgram, bool geometryChanged) {
-    return geometryChanged ? std::max(lastStage, wholeProgram) : lastStage;
+double previewSecondsPerSample(double lastStage, double wholeProgram, bool gridPending) {
+    return gridPending ? std::max(lastStage, wholeProgram) : lastStage;
 }
 
 int previewScale(double pixels, double secondsPerSample) {

@@ -63,20 +63,21 @@ struct LanePlan {
 LanePlan planLanes(Source wanted, bool compare, bool glReady, bool glFailed);
 
 // A preview's price per sample (pixel x AA sub-sample). A lane measures two:
-// its last stage's, and its last render of the whole program (a large
-// scene's preview drawn before the prune grid of its new geometry is built,
-// which evaluates every primitive at every step: many times the pruned
-// stage's cost). After an edit of the geometry
-// the preview is priced as a whole-program render, once one was measured;
-// after a camera, material or view change the grid is still there.
-double previewSecondsPerSample(double lastStage, double wholeProgram, bool geometryChanged);
+// its last stage's, and its last whole-program render's (a large scene's
+// preview drawn before the prune grid of an edit is built evaluates every
+// primitive at every step: many times the pruned stage's cost). While the
+// scene's grid may still be missing (an edit since the last full-size stage,
+// which waits for it; prune/grid_edits.h) the preview is priced as a
+// whole-program render, once one was measured; after a relight, a resize or
+// a change of backend the grid is there.
+double previewSecondsPerSample(double lastStage, double wholeProgram, bool gridPending);
 
 // The scale (width / scale x height / scale) of the largest preview costing
 // about kPreviewSeconds at that price; at least half resolution, at most
 // 1/kCoarsestPreview, which is also the first preview's, before anything is
 // measured: a scene just opened may be the 1001-sphere molecule, whose
 // whole program costs about 0.7 ms a sample on llvmpipe's 2 cores (27 s at a
-// quarter of an 882 x 704 view, 0.46 s at 1/32).
+// quarter of an 882 x 704 view, 0.42 s at 1/32).
 inline constexpr double kPreviewSeconds = 0.05;
 inline constexpr int kCoarsestPreview = 32;
 int previewScale(double pixels, double secondsPerSample);

@@ -6,7 +6,7 @@
 #include "cpu/cpu_backend.h"
 #include "gl/gl_backend.h"
 #include "program/compile_scene.h"
-#include "prune/prune_grid.h"
+#include "prune/grid_edits.h"
 
 namespace sdfwb::app::gui {
 
@@ -34,8 +34,8 @@ Viewport::~Viewport() = default;
 
 void Viewport::plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
                     bool interacting) {
-    geometryChanged_ = !scene_ || scene.root != scene_->root || scene.environment.ground != scene_->environment.ground;
     scene_ = std::make_shared<const scene::Scene>(scene);
+    gridPending_ = !gridScene_ || !prune::keepsPruneGrids(*gridScene_, scene);
     compare_ = ui.compare != ui::CompareMode::Off;
     wanted_ = ui.backend == ui::ViewBackend::Gl ? Source::Gl : Source::Cpu;
     heat_ = ui.stepHeat;
@@ -117,7 +117,8 @@ Viewport::Next Viewport::nextProgram(Lane& lane) {
     if (lane.stage < stages_.size() && stages_[lane.stage].preview && lane.content.state == state_) ++lane.stage;
     if (lane.stage >= stages_.size()) return Next::None;
     const Stage& stage = stages_[lane.stage];
-    int scale = stage.preview ? previewScale(static_cast<double>(width_) * height_, secondsPerSample(lane, stage)) : 1;
+    int scale =
+        stage.preview ? previewScale(static_cast<double>(width_) * height_, expectedSecondsPerSample(lane, stage)) : 1;
     program::CompileOptions options;
     options.width = std::max(1, width_ / scale);
     options.height = std::max(1, height_ / scale);
@@ -165,7 +166,7 @@ void Viewport::advance(Lane& lane, bool renders, double budgetSeconds) {
         control.tileSize = tileSize(lane, stage);
         // a preview of a large scene is drawn before its grid is built
         control.waitForPruneGrid = !stage.preview;
-        lane.rendersWhole = stage.preview && !prune::pruneGridIfBuilt(*lane.next).has_value();
+        lane.rendersWhole = stage.preview && gridPending_;
         try {
             lane.job = lane.backend->startProgressive(*lane.next, control);
         } catch (const std::exception& error) {
@@ -231,19 +232,23 @@ void Viewport::finishStage(Lane& lane) {
             differenceState_ = state_;
         }
     }
+    if (current && !stages_[lane.stage].preview) {
+        gridScene_ = scene_;
+        gridPending_ = false;
+    }
     if (current) ++lane.stage;
     lane.next.reset();
     lane.job.reset();
 }
 
-double Viewport::secondsPerSample(const Lane& lane, const Stage& stage) const {
+double Viewport::expectedSecondsPerSample(const Lane& lane, const Stage& stage) const {
     if (!stage.preview) return lane.secondsPerSample;
-    return previewSecondsPerSample(lane.secondsPerSample, lane.secondsPerWholeSample, geometryChanged_);
+    return previewSecondsPerSample(lane.secondsPerSample, lane.secondsPerWholeSample, gridPending_);
 }
 
 int Viewport::tileSize(const Lane& lane, const Stage& stage) const {
     if (lane.source != Source::Gl) return 0;  // the CPU backend's default: its tiles run on workers
-    double price = secondsPerSample(lane, stage);
+    double price = expectedSecondsPerSample(lane, stage);
     if (price <= 0) return kDefaultTileSize;
     // a square tile whose single sub-sample pass costs about kDrawBudget
     int side = static_cast<int>(std::sqrt(kDrawBudget / price));

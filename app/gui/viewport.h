@@ -120,7 +120,7 @@ private:
         // (previewSecondsPerSample).
         double secondsPerSample = 0;
         double secondsPerWholeSample = 0;
-        bool rendersWhole = false;  // the running job evaluates the whole program: no prune grid yet
+        bool rendersWhole = false;  // the running job is a preview started while the grid was pending
     };
 
     void plan(const scene::Scene& scene, std::uint64_t revision, const ui::UiState& ui, int width, int height,
@@ -135,7 +135,7 @@ private:
     void advance(Lane& lane, bool renders, double budgetSeconds);
     void finishStage(Lane& lane);
     // What one sample of the lane's stage is expected to cost.
-    double secondsPerSample(const Lane& lane, const Stage& stage) const;
+    double expectedSecondsPerSample(const Lane& lane, const Stage& stage) const;
     int tileSize(const Lane& lane, const Stage& stage) const;
     SlotView view(Source wanted) const;
     SlotImage slot(Source wanted) const;
@@ -156,7 +156,10 @@ private:
     int width_ = 0, height_ = 0;
     Source wanted_ = Source::Gl;
     bool compare_ = false, heat_ = false, interacting_ = false;
-    bool geometryChanged_ = false;  // since the last request: a new prune grid is needed
+    // The scene of the last full-size stage finished, which waited for its
+    // prune grids; whether the current scene's may still be missing.
+    std::shared_ptr<const scene::Scene> gridScene_;
+    bool gridPending_ = true;
     LanePlan lanePlan_;
 
     std::optional<image::Comparison> comparison_;

@@ -103,16 +103,16 @@ TEST(ViewChoice, APreviewCostsAboutItsBudgetAtTheMeasuredPrice) {
             EXPECT_GT(pixels / ((scale - 1) * (scale - 1)) * price, kPreviewSeconds) << price;
         }
     }
-    EXPECT_EQ(previewScale(pixels, 1e-3), kCoarsestPreview);  // the whole molecule, 0.6 ms a sample
+    EXPECT_EQ(previewScale(pixels, 1e-3), kCoarsestPreview);  // the whole molecule, 0.7 ms a sample
 }
 
-// After an edit of the geometry the prune grid is rebuilt while the preview
-// evaluates the whole program: its price, not the pruned stage's, sizes it.
-TEST(ViewChoice, AGeometryEditIsPricedAsAWholeProgramRender) {
+// After an edit the prune grid is rebuilt while the preview evaluates the
+// whole program: its price, not the pruned stage's, sizes it.
+TEST(ViewChoice, APreviewWhileTheGridIsPendingIsPricedAsAWholeProgramRender) {
     EXPECT_EQ(previewSecondsPerSample(2e-5, 6e-4, true), 6e-4);
-    EXPECT_EQ(previewSecondsPerSample(2e-5, 6e-4, false), 2e-5);  // a camera move keeps the grid
+    EXPECT_EQ(previewSecondsPerSample(2e-5, 6e-4, false), 2e-5);  // after a relight the grid is there
     EXPECT_EQ(previewSecondsPerSample(2e-5, 0, true), 2e-5);      // no whole render measured yet
-    // a small scene has no grid: whole and last agree, and the larger counts
+    // a small scene has no grid, its previews are its whole renders: the larger counts
     EXPECT_EQ(previewSecondsPerSample(3e-6, 2e-6, true), 3e-6);
 }
 

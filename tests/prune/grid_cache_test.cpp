@@ -10,6 +10,7 @@
 
 #include "cpu/cpu_renderer.h"
 #include "program/compile_scene.h"
+#include "prune/grid_edits.h"
 #include "prune/prune_grid.h"
 #include "support/large_scenes.h"
 
@@ -54,6 +55,36 @@ TEST(PruneGridCache, AColourEditKeepsTheGridAndAMoveBuildsANewOne) {
     built = prune::pruneGridsBuilt();
     EXPECT_NE(prune::pruneGridFor(moved), grid);
     EXPECT_EQ(prune::pruneGridsBuilt(), built + 1);
+}
+
+// keepsPruneGrids, which the window's preview trusts to expect a grid: the
+// edit it keeps builds no grid; the edits it does not keep include a moved
+// sphere, a camera move (programs are compiled relative to the eye), a
+// light's softness and the epsilon, each of which builds one.
+TEST(PruneGridCache, TheEditsSaidToKeepTheGridsBuildNone) {
+    const scene::Scene before = test::moleculeScene("molecule_100");
+    const program::CompileOptions size{.width = 96, .height = 54, .aa = 1};
+    ASSERT_TRUE(prune::pruneGridFor(program::compileScene(before, size)));
+    ASSERT_FALSE(before.lights.empty());
+    scene::Scene relit = before;
+    relit.lights[0].direction = glm::dvec3(-0.3, 0.9, 0.1);
+    relit.lights[0].color = glm::dvec3(0.2, 0.5, 1.0);
+    EXPECT_TRUE(prune::keepsPruneGrids(before, relit));
+    long built = prune::pruneGridsBuilt();
+    prune::pruneGridFor(program::compileScene(relit, size));
+    EXPECT_EQ(prune::pruneGridsBuilt(), built);
+
+    scene::Scene moved = before, orbited = before, softer = before, looser = before;
+    moved.root.children[3].set("offset", glm::dvec3(0.5, 0.25, 0.125));
+    orbited.camera.azimuth += 40;
+    softer.lights[0].softness *= 2;
+    looser.render.epsilon *= 2;
+    for (const scene::Scene& changed : {moved, orbited, softer, looser}) {
+        EXPECT_FALSE(prune::keepsPruneGrids(before, changed));
+        built = prune::pruneGridsBuilt();
+        prune::pruneGridFor(program::compileScene(changed, size));
+        EXPECT_EQ(prune::pruneGridsBuilt(), built + 1);
+    }
 }
 
 // Tiles, the progressive viewport and the background build ask at once: the
