@@ -546,10 +546,15 @@ SHARED_FN TraceState advanceNormal(TraceState s, Sample field, TraceSettings set
 // bounds the distance loosely reads about its slope times h_i along an open
 // normal, and a convex surface of slope 0.4 came out occluded to 0.76
 // (M = 4): d_i is read in the surface's own scale, as its offsets are
-// (surfaceOffset).
+// (surfaceOffset). That scale is the hit surface's: another surface near it
+// (an exact floor by a loose stone) or a crease the normal's samples
+// straddle reads farther than it is, so a scaled reading stops at h_i, where
+// it makes no occlusion, rather than going on to cancel what the other
+// samples found. (Unscaled readings are left as they are.)
 SHARED_FN TraceState advanceOcclusion(TraceState s, Sample field, TraceSettings settings) {
     real h = real(s.counter + 1) / real(settings.aoSamples) * settings.aoDistance;
-    s.occlusion = s.occlusion + s.occlusionWeight * (h - field.d * s.offsetScale);
+    real reading = min(field.d * s.offsetScale, max(field.d, h));
+    s.occlusion = s.occlusion + s.occlusionWeight * (h - reading);
     s.occlusionWeight = s.occlusionWeight * real(0.5);
     s.counter = s.counter + 1;
     if (s.counter < settings.aoSamples) {
