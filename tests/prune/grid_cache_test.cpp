@@ -60,7 +60,7 @@ TEST(PruneGridCache, AColourEditKeepsTheGridAndAMoveBuildsANewOne) {
 // keepsPruneGrids, which the window's preview trusts to expect a grid: the
 // edit it keeps builds no grid; the edits it does not keep include a moved
 // sphere, a camera move (programs are compiled relative to the eye), a
-// light's softness and the epsilon, each of which builds one.
+// light's softness and the AO distance, each of which builds one.
 TEST(PruneGridCache, TheEditsSaidToKeepTheGridsBuildNone) {
     const scene::Scene before = test::moleculeScene("molecule_100");
     const program::CompileOptions size{.width = 96, .height = 54, .aa = 1};
@@ -74,12 +74,14 @@ TEST(PruneGridCache, TheEditsSaidToKeepTheGridsBuildNone) {
     prune::pruneGridFor(program::compileScene(relit, size));
     EXPECT_EQ(prune::pruneGridsBuilt(), built);
 
-    scene::Scene moved = before, orbited = before, softer = before, looser = before;
+    scene::Scene moved = before, orbited = before, softer = before, widerAo = before;
     moved.root.children[3].set("offset", glm::dvec3(0.5, 0.25, 0.125));
     orbited.camera.azimuth += 40;
     softer.lights[0].softness *= 2;
-    looser.render.epsilon *= 2;
-    for (const scene::Scene& changed : {moved, orbited, softer, looser}) {
+    widerAo.render.aoDistance *= 2;
+    int edit = 0;
+    for (const scene::Scene& changed : {moved, orbited, softer, widerAo}) {
+        SCOPED_TRACE(edit++);
         EXPECT_FALSE(prune::keepsPruneGrids(before, changed));
         built = prune::pruneGridsBuilt();
         prune::pruneGridFor(program::compileScene(changed, size));
