@@ -68,6 +68,16 @@ Node sphereAt(dvec3 centre, double radius) {
     return translate;
 }
 
+// Ambient and diffuse only (no specular highlight), for the shadow and
+// occlusion tests: L_A + S (R_A + R_D n.l) where lit, L_A in shadow.
+scene::Material matte() {
+    scene::Material m;
+    m.ambient = dvec3(0.1);
+    m.diffuse = dvec3(0.7, 0.6, 0.5);
+    m.specular = dvec3(0);
+    return m;
+}
+
 // A pixel's primary ray in world coordinates, as the CPU renderer shoots it.
 struct WorldRay {
     dvec3 origin;
@@ -201,10 +211,7 @@ TEST(AnalyticShading, MissedRaysShowTheBackground) {
 // A sphere over the floor, the light straight above: a hard shadow is the
 // disc under the sphere, where only the ambient light and emission remain.
 TEST(AnalyticShading, AHardShadowIsTheDiscUnderTheSphere) {
-    scene::Material m;
-    m.ambient = dvec3(0.1);
-    m.diffuse = dvec3(0.7, 0.6, 0.5);
-    m.specular = dvec3(0);
+    const scene::Material m = matte();
     scene::Scene s = emptyScene(m);
     s.environment.ambient = dvec3(0.05);
     s.render.shadows = scene::ShadowMode::Hard;
@@ -244,10 +251,7 @@ TEST(AnalyticShading, AHardShadowIsTheDiscUnderTheSphere) {
 // multiple of epsilon off it, where such a field reads under epsilon, called
 // them blocked there, and the lit side of a lumpy stone had black spots.
 TEST(AnalyticShading, AFieldBelowTheDistanceCastsNoShadowOnItsOwnLitSide) {
-    scene::Material m;
-    m.ambient = dvec3(0.1);
-    m.diffuse = dvec3(0.7, 0.6, 0.5);
-    m.specular = dvec3(0);
+    const scene::Material m = matte();
     const double radius = 1.2;
     const dvec3 lightColor(1, 0.9, 0.8);
     for (scene::ShadowMode mode : {scene::ShadowMode::Hard, scene::ShadowMode::Soft}) {
@@ -272,10 +276,7 @@ TEST(AnalyticShading, AFieldBelowTheDistanceCastsNoShadowOnItsOwnLitSide) {
 // surface nothing occludes (ao = 1), and a field reading 0.4 of the distance
 // there darkened the whole sphere (ao 0.79 with these 5 samples).
 TEST(AnalyticShading, AFieldBelowTheDistanceDoesNotOccludeItsOwnConvexSide) {
-    scene::Material m;
-    m.ambient = dvec3(0.1);
-    m.diffuse = dvec3(0.7, 0.6, 0.5);
-    m.specular = dvec3(0);
+    const scene::Material m = matte();
     scene::Scene s = emptyScene(m);
     s.render.epsilon = 1e-3;
     s.render.aoSamples = 5;
