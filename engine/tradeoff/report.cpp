@@ -41,9 +41,8 @@ double medianOf(std::vector<double> v) {
 }
 
 constexpr const char* kRowHeader =
-    "| setting | backend | ms | x default | mean steps | max steps | mean evals | mean err | max err | PSNR dB | % > "
-    "1/255 | "
-    "% > 8/255 | hit mismatch % | depth err % | |\n"
+    "| setting | backend | ms | x default | mean steps | max steps | mean evals | "
+    "mean err | max err | PSNR dB | % > 1/255 | % > 8/255 | hit mismatch % | depth err % | |\n"
     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 std::string row(const SceneResult& scene, size_t index, size_t backend, const std::string& backendName,
