@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <exception>
 
+#include "jobs/thread_priority.h"
+
 namespace sdfwb::jobs {
 
 void Job::wait() const {
@@ -22,6 +24,8 @@ void Job::finish() {
 JobQueue::JobQueue(int workers, WorkerScope scope) : scope_(std::move(scope)) {
     for (int i = 0; i < std::max(1, workers); ++i) {
         workers_.emplace_back([this] {
+            // before the scope, so that threads it starts (a GL driver's) inherit it
+            becomeBackgroundThread();
             if (scope_) {
                 scope_([this] { run(); });
             } else {

@@ -9,7 +9,8 @@
 // Parallelism inside a job is the job's business (the CPU renderer spreads
 // tiles over oneTBB); a queue's workers are for running jobs side by side.
 // A worker can be bound to a resource for its whole life, such as a GL
-// context current on its thread (WorkerScope).
+// context current on its thread (WorkerScope). Workers run at background
+// priority (thread_priority.h), so a queue never slows the thread that polls it.
 
 #include <atomic>
 #include <condition_variable>

@@ -11,6 +11,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include <climits>
+
+#include "jobs/thread_priority.h"
 #endif
 
 namespace sdfwb::jobs {
@@ -75,11 +79,24 @@ void withThreads(int threads, const std::function<void()>& work) {
 
 int defaultThreads() { return tbb::this_task_arena::max_concurrency(); }
 
+namespace {
+// The nice value this pool thread last took from a caller (thread_priority.h).
+thread_local int niceTaken = INT_MIN;
+}  // namespace
+
 void parallelFor(int count, const std::function<void(int)>& body) {
+    // oneTBB's pool threads serve every caller; a body runs at least as nice
+    // as its caller, so that a background render's tiles do not compete with
+    // the UI thread. (Plain threads inherit their creator's nice value.)
+    const int callerNice = threadNice();
     // One index per task: tiles and grid cells differ widely in cost.
     tbb::parallel_for(
         tbb::blocked_range<int>(0, count, 1),
         [&](const tbb::blocked_range<int>& range) {
+            if (niceTaken != callerNice) {
+                becomeAtLeastAsNice(callerNice);
+                niceTaken = callerNice;
+            }
             for (int i = range.begin(); i != range.end(); ++i) body(i);
         },
         tbb::simple_partitioner());
