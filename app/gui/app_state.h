@@ -21,9 +21,9 @@
 #include "app/user_files/primitive_folder.h"
 #include "app/user_files/recent_files.h"
 #include "tradeoff/measurements.h"
-#include "ui/polynomial_panel.h"
 #include "ui/editor.h"
 #include "ui/file_browser.h"
+#include "ui/polynomial_panel.h"
 #include "ui/script.h"
 #include "ui/transform_handles.h"
 #include "ui/ui_state.h"
@@ -48,9 +48,9 @@ struct FileState {
     std::filesystem::path current;  // "" for an unsaved new scene
     FileDialogState dialog;
     PendingAction pending;
-    bool askUnsaved = false;        // the "save changes?" prompt is open
-    bool offerRestore = false;      // the autosave restore prompt is open
-    double lastAutosave = 0;        // glfwGetTime() of the last autosave check
+    bool askUnsaved = false;    // the "save changes?" prompt is open
+    bool offerRestore = false;  // the autosave restore prompt is open
+    double lastAutosave = 0;    // glfwGetTime() of the last autosave check
 };
 
 struct ViewRequest {
@@ -82,20 +82,23 @@ struct AppState {
     MeshExport meshExport;  // File > Export mesh
     FileState files;
     ViewRequest view;
-    ViewPicks picks;  // the viewport's readout and click picks
-    ui::HandleDrag handleDrag;     // a move, rotate or scale handle held in the viewport
+    ViewPicks picks;            // the viewport's readout and click picks
+    ui::HandleDrag handleDrag;  // a move, rotate or scale handle held in the viewport
     bool pressTookHandle = false;
-    bool showShortcuts = false;    // Help > Keyboard shortcuts  // the last press in the viewport was on a handle (not a click to select)
+    bool showShortcuts =
+        false;  // Help > Keyboard shortcuts  // the last press in the viewport was on a handle (not a click to select)
     std::vector<KeyPress> keyPresses;  // since the last frame
     std::uint64_t lastRevision = 0;    // the editor's revision seen last frame
     double lastChange = 0;             // glfwGetTime() when it last changed
     std::optional<ui::ScriptRunner> script;
-    bool scripted = false;  // scripts and screenshot runs: no prompts, no autosave
-    std::size_t messagesPrinted = 0;  // of ui.messages, written to stdout in scripted runs
-    std::string viewportErrorLogged;  // the viewport's error last put in the log
+    bool scripted = false;                            // scripts and screenshot runs: no prompts, no autosave
+    std::size_t messagesPrinted = 0;                  // of ui.messages, written to stdout in scripted runs
+    std::string viewportErrorLogged;                  // the viewport's error last put in the log
     std::optional<std::filesystem::path> screenshot;  // to save at the end of this frame
     bool quit = false;
     int exitCode = 0;
+    std::string windowTitleShown;  // what glfwSetWindowTitle was last given
+    double frameStart = 0;         // glfwGetTime() when the last frame began its work
     float frameSeconds = 0;
     float slowestFrameSeconds = 0;  // over the last few seconds
     double slowestFrameSince = 0;   // glfwGetTime() when that window started

@@ -107,17 +107,29 @@ void printNewMessages(AppState& app) {
     }
 }
 
+// While background work runs (renders, an implicitization's live progress)
+// and nothing else needs frames, the window draws at most this often. On
+// llvmpipe a frame of the window costs about 20 ms of processor time over the
+// driver's threads, so an unpaced loop took the cores the render needs, all
+// the more since the render's threads yield to the window's (jobs/thread_priority.h).
+// Input ends the wait at once, so the window answers as quickly as before.
+constexpr double kBackgroundFrameSeconds = 1.0 / 30;
+
 void runFrame(AppState& app, Host& host) {
-    double start = glfwGetTime();
-    // a running implicitization redraws its live progress every frame
-    bool busy =
-        !host.idle() || app.script || app.snapshot.running() || app.polynomial.job.running() || keyGate.holding();
+    // scripts run a command a frame, and keys held back by the gate need the next one
+    bool needsFrames = app.script || keyGate.holding();
+    bool background = !host.idle() || app.snapshot.running() || app.polynomial.job.running();
     keyGate.beginFrame(app.window);
-    if (busy) {
+    if (needsFrames) {
         glfwPollEvents();
+    } else if (background) {
+        glfwWaitEventsTimeout(std::max(0.0, app.frameStart + kBackgroundFrameSeconds - glfwGetTime()));
     } else {
         glfwWaitEventsTimeout(0.25);  // idle: no need to spin
     }
+    // the frame's own time: what the window takes to answer, not its wait for input
+    double start = glfwGetTime();
+    app.frameStart = start;
     if (glfwWindowShouldClose(app.window)) {
         glfwSetWindowShouldClose(app.window, GLFW_FALSE);
         request(app, {PendingAction::Kind::Quit, {}});
@@ -153,7 +165,12 @@ void runFrame(AppState& app, Host& host) {
     noteViewportError(app);
     for (const std::string& error : takeGlDebugErrors()) app.ui.error("GL: " + error);
     if (app.scripted) printNewMessages(app);
-    glfwSetWindowTitle(app.window, windowTitle(app).c_str());
+    // only on a change: setting it sends the window a property event, which
+    // ended every wait for input at once and kept an idle window drawing
+    if (std::string title = windowTitle(app); title != app.windowTitleShown) {
+        glfwSetWindowTitle(app.window, title.c_str());
+        app.windowTitleShown = std::move(title);
+    }
     ImGui::Render();
 
     const glcontext::GlFunctions& gl = app.context->gl();
