@@ -21,13 +21,14 @@ class GlProgressiveRender : public render::ProgressiveRender {
 public:
     // Makes the float targets for program.width x program.height and draws the
     // tiles of control.region (all of them without one), control.tileSize
-    // pixels per side (defaultTileSize when 0, never under 16).
+    // pixels per side (defaultTileSize when 0, never under 8).
     GlProgressiveRender(GlRenderer& renderer, program::Program program, const render::RenderControl& control,
                         int defaultTileSize = 64);
 
     // Issues draws, waiting for each with a fence (and timing it with a GL
-    // timer query), until `budgetSeconds` have passed or the render is
-    // complete. At least one draw runs per call.
+    // timer query), while another draw as long as the last one still ends
+    // within `budgetSeconds`, until the render is complete. At least one draw
+    // runs per call.
     std::vector<render::TileRect> advance(double budgetSeconds) override;
     // Issues draws while `another()` (asked before each) says so, calling
     // `afterEach(drawsDone, drawsTotal)` after each; returns the tiles completed.
@@ -51,8 +52,8 @@ private:
     program::Program program_;
     RenderTargets targets_;
     std::vector<render::TileRect> tiles_;
-    size_t next_ = 0;       // tile being drawn
-    int subsample_ = 0;     // next sub-sample of that tile, 0 .. aa*aa-1
+    size_t next_ = 0;    // tile being drawn
+    int subsample_ = 0;  // next sub-sample of that tile, 0 .. aa*aa-1
     image::Frame frame_;
     glcontext::GlObject timer_;  // GL_TIME_ELAPSED query around each draw
     double drawSeconds_ = 0;
