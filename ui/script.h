@@ -20,10 +20,10 @@
 namespace sdfwb::ui {
 
 struct ScriptCommand {
-    int line = 0;                    // 1-based line in the script
-    std::string name;                // "select", "set", ...
-    std::vector<std::string> args;   // whitespace-separated; `set` keeps its value whole
-    bool expectFailure = false;      // written `fails <command>`: the command must fail
+    int line = 0;                   // 1-based line in the script
+    std::string name;               // "select", "set", ...
+    std::vector<std::string> args;  // whitespace-separated; `set` keeps its value whole
+    bool expectFailure = false;     // written `fails <command>`: the command must fail
 };
 
 // Throws std::runtime_error "<source>:<line>: <reason>" on the first bad line.
@@ -65,6 +65,11 @@ public:
     // every command's effect is drawn before the next one looks at it);
     // waiting commands return Running until their condition holds.
     ScriptStatus step(Editor& editor, UiState& ui, ScriptHost& host);
+
+    // The current command waits for background work (`wait idle`,
+    // `screenshot`, `polynomial run`): until it ends, the window may draw
+    // at its own pace instead of a frame right after another.
+    bool waitsForBackground() const { return waitingIdle_ || polynomialRunning_; }
 
     // "<source>:<line>: <reason>" after Failed.
     const std::string& error() const { return error_; }

@@ -116,14 +116,16 @@ void printNewMessages(AppState& app) {
 constexpr double kBackgroundFrameSeconds = 1.0 / 30;
 
 void runFrame(AppState& app, Host& host) {
-    // scripts run a command a frame, and keys held back by the gate need the next one
-    bool needsFrames = app.script || keyGate.holding();
+    // a script's next command (one a frame), and keys held back by the gate, need the next frame at once
+    bool needsFrame = (app.script && !app.script->waitsForBackground()) || keyGate.holding();
     bool background = !host.idle() || app.snapshot.running() || app.polynomial.job.running();
     keyGate.beginFrame(app.window);
-    if (needsFrames) {
+    if (needsFrame) {
         glfwPollEvents();
     } else if (background) {
         glfwWaitEventsTimeout(std::max(0.0, app.frameStart + kBackgroundFrameSeconds - glfwGetTime()));
+    } else if (app.script) {
+        glfwPollEvents();  // the script's wait ends this frame
     } else {
         glfwWaitEventsTimeout(0.25);  // idle: no need to spin
     }
