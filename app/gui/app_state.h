@@ -82,11 +82,10 @@ struct AppState {
     MeshExport meshExport;  // File > Export mesh
     FileState files;
     ViewRequest view;
-    ViewPicks picks;            // the viewport's readout and click picks
-    ui::HandleDrag handleDrag;  // a move, rotate or scale handle held in the viewport
-    bool pressTookHandle = false;
-    bool showShortcuts =
-        false;  // Help > Keyboard shortcuts  // the last press in the viewport was on a handle (not a click to select)
+    ViewPicks picks;                   // the viewport's readout and click picks
+    ui::HandleDrag handleDrag;         // a move, rotate or scale handle held in the viewport
+    bool pressTookHandle = false;      // the last press in the viewport was on a handle (not a click to select)
+    bool showShortcuts = false;        // Help > Keyboard shortcuts
     std::vector<KeyPress> keyPresses;  // since the last frame
     std::uint64_t lastRevision = 0;    // the editor's revision seen last frame
     double lastChange = 0;             // glfwGetTime() when it last changed

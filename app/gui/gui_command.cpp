@@ -118,7 +118,9 @@ constexpr double kBackgroundFrameSeconds = 1.0 / 30;
 void runFrame(AppState& app, Host& host) {
     // a script's next command (one a frame), and keys held back by the gate, need the next frame at once
     bool needsFrame = (app.script && !app.script->waitsForBackground()) || keyGate.holding();
-    bool background = !host.idle() || app.snapshot.running() || app.polynomial.job.running();
+    // work whose end the window must show without waiting for input
+    bool background = !host.idle() || app.polynomial.job.running() || app.polynomial.check.pending() ||
+                      app.picks.readout.pending() || app.picks.click.pending();
     keyGate.beginFrame(app.window);
     if (needsFrame) {
         glfwPollEvents();

@@ -24,7 +24,7 @@ void Job::finish() {
 JobQueue::JobQueue(int workers, WorkerScope scope) : scope_(std::move(scope)) {
     for (int i = 0; i < std::max(1, workers); ++i) {
         workers_.emplace_back([this] {
-            // before the scope, so that threads it starts (a GL driver's) inherit it
+            // before the scope, so that threads started inside it inherit it
             becomeBackgroundThread();
             if (scope_) {
                 scope_([this] { run(); });

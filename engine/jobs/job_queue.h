@@ -10,7 +10,7 @@
 // tiles over oneTBB); a queue's workers are for running jobs side by side.
 // A worker can be bound to a resource for its whole life, such as a GL
 // context current on its thread (WorkerScope). Workers run at background
-// priority (thread_priority.h), so a queue never slows the thread that polls it.
+// priority (thread_priority.h), below the thread that made the queue.
 
 #include <atomic>
 #include <condition_variable>

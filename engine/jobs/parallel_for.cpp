@@ -82,18 +82,25 @@ int defaultThreads() { return tbb::this_task_arena::max_concurrency(); }
 namespace {
 // The nice value this pool thread last took from a caller (thread_priority.h).
 thread_local int niceTaken = INT_MIN;
+// parallelFor calls waiting on this thread: a thread that called one may run
+// other callers' bodies while it waits, and must keep its own priority.
+thread_local int callsWaiting = 0;
 }  // namespace
 
 void parallelFor(int count, const std::function<void(int)>& body) {
-    // oneTBB's pool threads serve every caller; a body runs at least as nice
-    // as its caller, so that a background render's tiles do not compete with
-    // the UI thread. (Plain threads inherit their creator's nice value.)
+    // oneTBB's pool threads serve every caller; they run a body at least as
+    // nice as its caller, so that a background render's tiles do not compete
+    // with the window's thread. (Plain threads inherit their creator's.)
     const int callerNice = threadNice();
+    ++callsWaiting;
+    struct Leave {
+        ~Leave() { --callsWaiting; }
+    } leave;
     // One index per task: tiles and grid cells differ widely in cost.
     tbb::parallel_for(
         tbb::blocked_range<int>(0, count, 1),
         [&](const tbb::blocked_range<int>& range) {
-            if (niceTaken != callerNice) {
+            if (callsWaiting == 0 && niceTaken != callerNice) {
                 becomeAtLeastAsNice(callerNice);
                 niceTaken = callerNice;
             }

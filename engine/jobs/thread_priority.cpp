@@ -7,10 +7,6 @@
 #include <cerrno>
 
 namespace sdfwb::jobs {
-namespace {
-constexpr int kNicest = 19;  // setpriority's upper bound on Linux
-}
-
 int threadNice() {
     // getpriority may return -1 as a value, so errno tells a failure apart
     errno = 0;
