@@ -5,6 +5,7 @@
 
 #include "cpu/cpu_backend.h"
 #include "gl/gl_backend.h"
+#include "gl/progressive_render.h"
 #include "program/compile_scene.h"
 #include "prune/grid_edits.h"
 
@@ -250,11 +251,9 @@ int Viewport::tileSize(const Lane& lane, const Stage& stage) const {
     if (lane.source != Source::Gl) return 0;  // the CPU backend's default: its tiles run on workers
     double price = expectedSecondsPerSample(lane, stage);
     if (price <= 0) return kDefaultTileSize;
-    // a square tile whose single sub-sample pass costs about kDrawBudget; on
-    // the 1001-sphere molecule even 8 x 8 costs 4 ms (16 x 16 cost 17 ms, and
-    // the window's frames as much)
+    // a square tile whose single sub-sample pass costs about kDrawBudget
     int side = static_cast<int>(std::sqrt(kDrawBudget / price));
-    return std::clamp(side / 8 * 8, 8, 256);
+    return std::clamp(side / gl::kMinTileSize * gl::kMinTileSize, gl::kMinTileSize, 256);
 }
 
 SlotView Viewport::view(Source wanted) const {

@@ -15,7 +15,7 @@ GlProgressiveRender::GlProgressiveRender(GlRenderer& renderer, program::Program 
       program_(std::move(program)),
       targets_(makeRenderTargets(gl_, program_.width, program_.height)),
       tiles_(render::tilesToRender(program_.width, program_.height, control.region,
-                                   std::max(8, control.tileSize > 0 ? control.tileSize : defaultTileSize))),
+                                   std::max(kMinTileSize, control.tileSize > 0 ? control.tileSize : defaultTileSize))),
       frame_(render::blankFrame(program_.width, program_.height)),
       timer_(glcontext::makeQuery(gl_)) {
     const float zero[4] = {0, 0, 0, 0};
