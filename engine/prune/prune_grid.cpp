@@ -9,6 +9,10 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <unordered_map>
 
 #include "jobs/job_queue.h"
 #include "jobs/parallel_for.h"
@@ -31,14 +35,52 @@ constexpr double kMinSoftness = 1.25;
 // A split is kept when its children average at most this fraction of the
 // cell's instructions.
 constexpr double kSplitGain = 0.75;
-// Instructions stored over all leaves at most (memory: 28 bytes each).
+// Instructions over all leaves at most, counted before equal leaves are
+// shared (LeafStore): it bounds the build's work.
 constexpr long kCodeBudget = 4000000;
+
+// Leaves and their instructions, each distinct list stored once. Neighbouring
+// cells far from the surface keep the same children, so most leaves repeat
+// others: the 100-sphere molecule's grid has 203,000 leaves and 1011
+// distinct lists (4.0 million instructions, 113 MB, before sharing).
+class LeafStore {
+public:
+    // The index of a leaf holding `list` with its field in `result`.
+    int add(std::span<const Instruction> list, int result) {
+        const std::string_view bytes = bytesOf(list);
+        const std::size_t key = std::hash<std::string_view>{}(bytes) ^ static_cast<std::size_t>(result);
+        auto [first, last] = index_.equal_range(key);
+        for (auto it = first; it != last; ++it) {
+            const PruneLeaf& leaf = leaves[static_cast<size_t>(it->second)];
+            if (leaf.result == result && bytesOf(listOf(leaf)) == bytes) return it->second;
+        }
+        const int added = static_cast<int>(leaves.size());
+        leaves.push_back({static_cast<int>(code.size()), static_cast<int>(list.size()), result});
+        code.insert(code.end(), list.begin(), list.end());
+        index_.emplace(key, added);
+        return added;
+    }
+
+    std::span<const Instruction> listOf(const PruneLeaf& leaf) const {
+        return {code.data() + leaf.offset, static_cast<size_t>(leaf.count)};
+    }
+
+    std::vector<PruneLeaf> leaves;
+    std::vector<Instruction> code;
+
+private:
+    static std::string_view bytesOf(std::span<const Instruction> list) {
+        static_assert(std::has_unique_object_representations_v<Instruction>, "instructions compare by their bytes");
+        return {reinterpret_cast<const char*>(list.data()), list.size_bytes()};
+    }
+
+    std::unordered_multimap<std::size_t, int> index_;
+};
 
 // One root cell's subtree, indices local to it until merged.
 struct LocalTree {
     std::vector<int> nodes{0};  // nodes[0]: the root cell
-    std::vector<PruneLeaf> leaves;
-    std::vector<Instruction> code;
+    LeafStore leaves;
 };
 
 class Builder {
@@ -60,10 +102,8 @@ private:
     }
 
     int addLeaf(LocalTree& tree, const CodeSpan& span) {
-        tree.leaves.push_back({static_cast<int>(tree.code.size()), static_cast<int>(span.code.size()), span.result});
-        tree.code.insert(tree.code.end(), span.code.begin(), span.code.end());
         stored_ += static_cast<long>(span.code.size());
-        return static_cast<int>(tree.leaves.size()) - 1;
+        return tree.leaves.add(span.code, span.result);
     }
 
     // `pruned` is already pruned for this cell. The cell splits only where
@@ -200,27 +240,29 @@ std::shared_ptr<const PruneGrid> buildPruneGrid(const program::Program& program,
         builder.buildRoot(trees[static_cast<size_t>(i)], full, lo + glm::dvec3(cell) * grid->cellSize, grid->cellSize);
     });
 
-    // merge: root cells first, then every tree's inner nodes
+    // merge: root cells first, then every tree's inner nodes; a leaf equal to
+    // one of another tree is shared
     grid->nodes.resize(static_cast<size_t>(roots));
+    LeafStore merged;
     bool saves = false;
     for (int i = 0; i < roots; ++i) {
-        LocalTree& tree = trees[static_cast<size_t>(i)];
-        int nodeBase = static_cast<int>(grid->nodes.size()) - 1;  // local node 1 lands at nodes.size()
-        int leafBase = static_cast<int>(grid->leaves.size()), codeBase = static_cast<int>(grid->code.size());
-        auto relocate = [&](int node) { return node >= 0 ? node + leafBase : node - nodeBase; };
-        grid->nodes[static_cast<size_t>(i)] = relocate(tree.nodes[0]);
-        for (size_t n = 1; n < tree.nodes.size(); ++n) grid->nodes.push_back(relocate(tree.nodes[n]));
-        for (PruneLeaf leaf : tree.leaves) {
-            leaf.offset += codeBase;
-            grid->leaves.push_back(leaf);
+        const LocalTree& tree = trees[static_cast<size_t>(i)];
+        std::vector<int> leafIndex;
+        for (const PruneLeaf& leaf : tree.leaves.leaves) {
+            leafIndex.push_back(merged.add(tree.leaves.listOf(leaf), leaf.result));
             grid->longestLeaf = std::max(grid->longestLeaf, leaf.count);
             saves = saves || leaf.count < static_cast<int>(program.code.size());
         }
-        grid->code.insert(grid->code.end(), tree.code.begin(), tree.code.end());
+        int nodeBase = static_cast<int>(grid->nodes.size()) - 1;  // local node 1 lands at nodes.size()
+        auto relocate = [&](int node) { return node >= 0 ? leafIndex[static_cast<size_t>(node)] : node - nodeBase; };
+        grid->nodes[static_cast<size_t>(i)] = relocate(tree.nodes[0]);
+        for (size_t n = 1; n < tree.nodes.size(); ++n) grid->nodes.push_back(relocate(tree.nodes[n]));
     }
     if (!saves) {
         return nullptr;
     }
+    grid->leaves = std::move(merged.leaves);
+    grid->code = std::move(merged.code);
     addOutsideLeaf(program, *grid);
     return grid;
 }

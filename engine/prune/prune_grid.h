@@ -45,6 +45,7 @@ struct PruneGrid {
     glm::ivec3 dims{0};         // root cells per axis
     // nodes[i] >= 0: index of a leaf; < 0: -(first + 1), where nodes[first ...
     // first + 7] are the 2x2x2 children, x fastest. Root cells come first.
+    // Cells whose instructions are the same share one leaf.
     std::vector<int> nodes;
     std::vector<PruneLeaf> leaves;
     std::vector<program::Instruction> code;

@@ -87,10 +87,17 @@ void BM_GridBuild(benchmark::State& state) {
     }
     state.SetLabel(cases()[static_cast<size_t>(state.range(0))].name);
     if (grid) {
+        long cells = 0, listed = 0;  // cells share equal leaves
+        for (int node : grid->nodes) {
+            if (node < 0) continue;
+            ++cells;
+            listed += grid->leaves[static_cast<size_t>(node)].count;
+        }
+        state.counters["cells"] = static_cast<double>(cells);
         state.counters["leaves"] = static_cast<double>(grid->leaves.size());
         state.counters["stored_instr"] = static_cast<double>(grid->code.size());
         state.counters["longest_leaf"] = grid->longestLeaf;
-        state.counters["mean_leaf"] = static_cast<double>(grid->code.size()) / static_cast<double>(grid->leaves.size());
+        state.counters["mean_cell"] = static_cast<double>(listed) / static_cast<double>(cells);
         state.counters["MB"] = static_cast<double>(grid->code.size() * sizeof(program::Instruction) +
                                                    grid->nodes.size() * sizeof(int) +
                                                    grid->leaves.size() * sizeof(prune::PruneLeaf)) / 1e6;
