@@ -105,14 +105,14 @@ Fraction FractionArithmetic::quotient(const Polynomial& numerator, const Polynom
 }
 
 std::optional<Fraction> FractionArithmetic::divide(const Fraction& a, const Fraction& b) {
-  auto [bNumerator, bDenominator] = reduce(b);
+  auto [bNumerator, bDenominator] = expand(cancel(b));
   if (bNumerator.isZero()) return std::nullopt;
   Fraction inverse = quotient(std::move(bDenominator), bNumerator);
   return multiply(a, inverse);
 }
 
-std::pair<Polynomial, Polynomial> FractionArithmetic::reduce(Fraction a) const {
-  if (a.numerator.isZero()) return {a.numerator, ring_->one()};
+Fraction FractionArithmetic::cancel(Fraction a) const {
+  if (a.numerator.isZero()) return {a.numerator, {}};
   for (std::size_t i = 0; i < a.powers.size(); ++i) {
     while (a.powers[i] > 0) {
       auto q = algebra::divideExact(a.numerator, factors_[i]);
@@ -121,6 +121,10 @@ std::pair<Polynomial, Polynomial> FractionArithmetic::reduce(Fraction a) const {
       --a.powers[i];
     }
   }
+  return a;
+}
+
+std::pair<Polynomial, Polynomial> FractionArithmetic::expand(const Fraction& a) const {
   return {a.numerator, withFactors(ring_->one(), a.powers)};
 }
 

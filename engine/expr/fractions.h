@@ -64,9 +64,12 @@ class FractionArithmetic {
   // std::nullopt when b is zero.
   std::optional<Fraction> divide(const Fraction& a, const Fraction& b);
 
-  // Cancels factors that divide the numerator; returns {numerator, denominator}
-  // with the denominator a product of factors (1 when there is none).
-  std::pair<algebra::Polynomial, algebra::Polynomial> reduce(Fraction a) const;
+  // Cancels the factors that divide the numerator: what is left is a
+  // polynomial exactly when every power is 0 (factors are never constant).
+  Fraction cancel(Fraction a) const;
+  // {numerator, denominator} of a cancelled fraction, the denominator the
+  // product of its factors (1 when there is none); throws TooLargeToExpand.
+  std::pair<algebra::Polynomial, algebra::Polynomial> expand(const Fraction& a) const;
 
  private:
   // a * b after checking the degree and the work left (throws TooLargeToExpand).

@@ -59,7 +59,17 @@ Fraction GraphToFractions::convert(NodeId root, SourceLocation rootWhere) {
     const std::string& name = graph_.variables()[graph_.node(root).index];
     throw Error(rootWhere, options_.unmappedVariable(name));
   }
-  return *values[root];
+  return arithmetic_.cancel(*values[root]);
+}
+
+std::pair<algebra::Polynomial, algebra::Polynomial> GraphToFractions::convertToQuotient(NodeId root,
+                                                                                       SourceLocation rootWhere) {
+  const Fraction value = convert(root, rootWhere);
+  try {
+    return arithmetic_.expand(value);
+  } catch (const TooLargeToExpand& error) {
+    throw Error(graph_.origin(root).where, error.what());
+  }
 }
 
 }  // namespace sdfwb::expr

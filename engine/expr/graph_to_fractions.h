@@ -27,11 +27,16 @@ class GraphToFractions {
 
   GraphToFractions(const Graph& graph, FractionArithmetic& arithmetic, Options options);
 
-  // The exact value of `root`. Throws Error at the origin of the first
-  // operation that is not + - * / (integer powers were already expanded),
-  // e.g. "column 5: 'sqrt' is not a polynomial or rational function".
-  // `rootWhere` locates the error when root itself is an unmapped variable.
+  // The exact value of `root`, cancelled (FractionArithmetic::cancel). Throws
+  // Error at the origin of the first operation that is not + - * / (integer
+  // powers were already expanded), e.g. "column 5: 'sqrt' is not a
+  // polynomial or rational function", or whose product would be too large
+  // to expand. `rootWhere` locates the error when root itself is an unmapped
+  // variable.
   Fraction convert(NodeId root, SourceLocation rootWhere);
+  // The same as {numerator, denominator}; a denominator too large to expand
+  // is an Error at root's origin.
+  std::pair<algebra::Polynomial, algebra::Polynomial> convertToQuotient(NodeId root, SourceLocation rootWhere);
 
   // Where the first division by a non-constant happened, if any.
   const std::optional<Origin>& firstNonConstantDivision() const { return firstNonConstantDivision_; }

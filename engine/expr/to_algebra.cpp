@@ -1,5 +1,6 @@
 #include "expr/to_algebra.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "expr/formula.h"
@@ -25,20 +26,21 @@ GraphToFractions::Options byName(const Graph& graph, const algebra::RingPtr& rin
 RationalFunction toRationalFunction(const Graph& graph, NodeId node, const algebra::RingPtr& ring) {
   FractionArithmetic arithmetic(ring);
   GraphToFractions converter(graph, arithmetic, byName(graph, ring));
-  auto [numerator, denominator] = arithmetic.reduce(converter.convert(node, graph.origin(node).where));
+  auto [numerator, denominator] = converter.convertToQuotient(node, graph.origin(node).where);
   return {std::move(numerator), std::move(denominator)};
 }
 
 algebra::Polynomial toPolynomial(const Graph& graph, NodeId node, const algebra::RingPtr& ring) {
   FractionArithmetic arithmetic(ring);
   GraphToFractions converter(graph, arithmetic, byName(graph, ring));
-  auto [numerator, denominator] = arithmetic.reduce(converter.convert(node, graph.origin(node).where));
-  if (!denominator.isConstant()) {
+  // the denominator left is never expanded: it is 1 or the formula is no polynomial
+  Fraction value = converter.convert(node, graph.origin(node).where);
+  if (std::any_of(value.powers.begin(), value.powers.end(), [](unsigned power) { return power > 0; })) {
     const auto& division = converter.firstNonConstantDivision();
     throw Error(division ? division->where : graph.origin(node).where,
                 "division by a non-constant expression: the formula is not a polynomial");
   }
-  return numerator / denominator.leadingCoefficient();
+  return std::move(value.numerator);
 }
 
 std::vector<algebra::Polynomial> parsePolynomials(std::string_view source, const algebra::RingPtr& ring) {

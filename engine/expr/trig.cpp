@@ -177,7 +177,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
 
   // cos + i sin of each argument: the product of the angles' units to their multiples.
   std::map<NodeId, Fraction> trigValues;
-  for (const auto& [id, form] : trigArguments) {
+  for (const auto& [id, form] : trigArguments) try {
     Complex value{ring->one(), ring->zero()};
     Fraction scale = arithmetic.constant(1);
     for (const auto& [v, c] : form.coefficients) {
@@ -206,6 +206,8 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
         trigValues.emplace(id, std::move(*tangent));  // cos(n psi) is never identically 0
       }
     }
+  } catch (const TooLargeToExpand& error) {
+    throw Error(g.origin(id).where, error.what());
   }
 
   GraphToFractions::Options options;
@@ -219,7 +221,7 @@ TrigConversion toRationalParametrization(const ParametricEquations& equations, T
   options.leaf = [&](NodeId id) { return trigValues.at(id); };
   GraphToFractions converter(g, arithmetic, std::move(options));
   for (const CoordinateEquation& e : equations.equations) {
-    auto [numerator, denominator] = arithmetic.reduce(converter.convert(e.value, e.where));
+    auto [numerator, denominator] = converter.convertToQuotient(e.value, e.where);
     result.coordinates.push_back(e.coordinate);
     result.numerators.push_back(std::move(numerator));
     result.denominators.push_back(std::move(denominator));

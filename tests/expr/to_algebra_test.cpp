@@ -82,6 +82,22 @@ TEST_F(ToAlgebra, ErrorsNameTheFunctionAndColumn) {
   EXPECT_EQ(polynomialError("1/((x+1)^2 - x^2 - 2*x - 1)"), "column 2: division by an expression that is identically 0");
 }
 
+// x^-65536 sixteen times over y + 1: nothing is expanded while the formula
+// is read (the powers of the factors add up), and the denominator left at
+// the end, of degree 2^20 + 1, is past the expansion's degree limit. That is
+// an ordinary error at the formula's root, not an exception escaping the
+// conversion (a fuzzer found one); a polynomial never expands it at all.
+TEST_F(ToAlgebra, ADenominatorTooLargeToExpandIsAnErrorWithItsColumn) {
+  std::string source = "1/(y+1)";
+  for (int i = 0; i < 16; ++i) source += "*x^-65536";
+  const SpaceFormula f = compileImplicit(source);
+  const std::string rationalError =
+      testing::errorOf([&](std::string_view) { return toRationalFunction(f.graph, f.value, ring); }, source);
+  EXPECT_NE(rationalError.find("would have degree 1048577"), std::string::npos) << rationalError;
+  EXPECT_EQ(rationalError.rfind("column ", 0), 0u) << rationalError;
+  EXPECT_EQ(polynomialError(source), "column 2: division by a non-constant expression: the formula is not a polynomial");
+}
+
 TEST_F(ToAlgebra, PolynomialLists) {
   const auto ring2 = algebra::Ring::make({"a", "b"}, algebra::MonomialOrder::lex());
   const auto list = parsePolynomials("a^2 - 0.25; let c = a*b; c - 1", ring2);
