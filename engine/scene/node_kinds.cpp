@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "algebra/ring.h"
+#include "expr/derivative.h"
 #include "expr/formula.h"
 #include "expr/to_algebra.h"
 
@@ -130,14 +131,28 @@ const std::array<KindSpec, kNodeKindCount> kKinds = {{
     {Polynomial, "polynomial", Primitive, Bound, 0, 0, kPolynomial},
 }};
 
+// Checks what the scene compiler builds from the formula, so that a scene
+// that loads also compiles: the formula and its gradient (implicit surfaces
+// always use it, a distance formula for a triplanar texture), whose
+// derivatives fold constants that can pass their limit where the formula's
+// own did not ("c*x*c" keeps c*c apart, its x derivative folds it).
 std::string checkFormula(Range kind, const std::string& text) {
     try {
         switch (kind) {
-        case SdfFormula: expr::compileSdf(text); break;
-        case ImplicitFormula: expr::compileImplicit(text); break;
+        case SdfFormula: {
+            expr::SpaceFormula f = expr::compileSdf(text);
+            expr::gradient(f.graph, f.value);
+            break;
+        }
+        case ImplicitFormula: {
+            expr::SpaceFormula f = expr::compileImplicit(text);
+            expr::gradient(f.graph, f.value);
+            break;
+        }
         case PolynomialFormula: {
             expr::SpaceFormula f = expr::compileImplicit(text);
             expr::toPolynomial(f.graph, f.value, sdfwb::algebra::Ring::make({"x", "y", "z"}));
+            expr::gradient(f.graph, f.value);
             break;
         }
         default: break;

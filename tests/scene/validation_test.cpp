@@ -85,6 +85,21 @@ INSTANTIATE_TEST_SUITE_P(
                   "root.formula: column 7: unknown name 'q' (a formula over space uses p, x, y, z and its let names)"},
         ErrorCase{"not_a_polynomial", document(R"({"kind": "polynomial", "formula": "sqrt(x) - 1"})"),
                   "root.formula: column 1: 'sqrt' is not a polynomial or rational function"},
+        // c*x*c keeps c*c apart; its x derivative folds it past the limit on
+        // exact constants (each c has about 188,000 digits): refused at load,
+        // as the compiler would refuse it, for each formula kind
+        ErrorCase{"gradient_too_large_sdf",
+                  document(R"({"kind": "sdf", "formula": "((3^65536)^6)*x*((3^65536)^6) + length(p) - 1"})"),
+                  "root.formula: column 16: the number is too large to compute exactly (about 375224 digits; at "
+                  "most 315652)"},
+        ErrorCase{"gradient_too_large_implicit",
+                  document(R"({"kind": "implicit", "formula": "((3^65536)^6)*x*((3^65536)^6) + y^2 + z^2 - 1"})"),
+                  "root.formula: column 16: the number is too large to compute exactly (about 375224 digits; at "
+                  "most 315652)"},
+        ErrorCase{"gradient_too_large_polynomial",
+                  document(R"({"kind": "polynomial", "formula": "((3^65536)^6)*x*((3^65536)^6) + y^2 + z^2 - 1"})"),
+                  "root.formula: column 16: the number is too large to compute exactly (about 375224 digits; at "
+                  "most 315652)"},
         ErrorCase{"bounds_order", document(R"({"kind": "implicit", "bounds_min": [1, 0, 0], "bounds_max": [0, 1, 1]})"),
                   "root.bounds_max: must be greater than bounds_min in every component"},
         ErrorCase{"malformed_json", "{\n  \"format\": \"sdf-workbench-scene\",\n  \"version\": 1,,\n}",
