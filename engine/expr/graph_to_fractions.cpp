@@ -68,7 +68,7 @@ std::pair<algebra::Polynomial, algebra::Polynomial> GraphToFractions::convertToQ
   try {
     return arithmetic_.expand(value);
   } catch (const TooLargeToExpand& error) {
-    throw Error(graph_.origin(root).where, error.what());
+    throw Error(rootWhere, error.what());
   }
 }
 

@@ -35,7 +35,8 @@ class GraphToFractions {
   // variable.
   Fraction convert(NodeId root, SourceLocation rootWhere);
   // The same as {numerator, denominator}; a denominator too large to expand
-  // is an Error at root's origin.
+  // is an Error at `rootWhere` (graph nodes are shared, so root's own origin
+  // may be an earlier equal expression's).
   std::pair<algebra::Polynomial, algebra::Polynomial> convertToQuotient(NodeId root, SourceLocation rootWhere);
 
   // Where the first division by a non-constant happened, if any.

@@ -35,14 +35,15 @@ constexpr double kMinSoftness = 1.25;
 // A split is kept when its children average at most this fraction of the
 // cell's instructions.
 constexpr double kSplitGain = 0.75;
-// Instructions over all leaves at most, counted before equal leaves are
-// shared (LeafStore): it bounds the build's work.
+// Instructions over all leaves at most, counted as each cell's list is added
+// (the children of a split that prune nothing more count once), before equal
+// lists are shared (LeafStore): it bounds the build's work.
 constexpr long kCodeBudget = 4000000;
 
 // Leaves and their instructions, each distinct list stored once. Neighbouring
 // cells far from the surface keep the same children, so most leaves repeat
-// others: the 100-sphere molecule's grid has 203,000 leaves and 1011
-// distinct lists (4.0 million instructions, 113 MB, before sharing).
+// others (docs/large-scenes.md, "Shared leaves": a 35x smaller grid for the
+// 100-sphere molecule).
 class LeafStore {
 public:
     // The index of a leaf holding `list` with its field in `result`.

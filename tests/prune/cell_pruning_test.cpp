@@ -2,6 +2,9 @@
 // grid: on every shipped scene, the molecule and the generated large scenes.
 
 #include <random>
+#include <set>
+#include <string>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -99,7 +102,13 @@ TEST_P(LargeScene, PrunedFieldEqualsTheWholeProgramAndIsShort) {
     }
     double mean = static_cast<double>(instructions) / static_cast<double>(cells);
     EXPECT_LT(mean, program.code.size() / 4.0) << "longest leaf " << grid->longestLeaf;
-    // equal lists share one leaf
+    // equal lists share one leaf: no two leaves hold the same list
+    std::set<std::pair<int, std::string>> lists;
+    for (const prune::PruneLeaf& leaf : grid->leaves) {
+        const char* first = reinterpret_cast<const char*>(grid->code.data() + leaf.offset);
+        lists.emplace(leaf.result, std::string(first, static_cast<size_t>(leaf.count) * sizeof(program::Instruction)));
+    }
+    EXPECT_EQ(lists.size(), grid->leaves.size());
     EXPECT_LT(grid->leaves.size(), static_cast<size_t>(cells));
 }
 
