@@ -6,9 +6,10 @@
 // (primitive integer polynomials with positive leading coefficient, never
 // constant). Sums take the least common multiple of the factored denominators
 // rather than their product, so x/q + y/q stays over q, and the half-angle
-// denominators (1 + t^2)^k do not multiply up. The denominator expand() returns
-// for a cancelled fraction is therefore the lcm of the denominators the formula divides by,
-// with common factors cancelled where a factor divides the numerator.
+// denominators (1 + t^2)^k do not multiply up. The denominator expand()
+// returns for a cancelled fraction is therefore the lcm of the denominators
+// the formula divides by, with common factors cancelled where a factor
+// divides the numerator.
 
 #include <cstdint>
 #include <optional>

@@ -139,19 +139,13 @@ const std::array<KindSpec, kNodeKindCount> kKinds = {{
 std::string checkFormula(Range kind, const std::string& text) {
     try {
         switch (kind) {
-        case SdfFormula: {
-            expr::SpaceFormula f = expr::compileSdf(text);
-            expr::gradient(f.graph, f.value);
-            break;
-        }
-        case ImplicitFormula: {
-            expr::SpaceFormula f = expr::compileImplicit(text);
-            expr::gradient(f.graph, f.value);
-            break;
-        }
+        case SdfFormula:
+        case ImplicitFormula:
         case PolynomialFormula: {
-            expr::SpaceFormula f = expr::compileImplicit(text);
-            expr::toPolynomial(f.graph, f.value, sdfwb::algebra::Ring::make({"x", "y", "z"}));
+            expr::SpaceFormula f = kind == SdfFormula ? expr::compileSdf(text) : expr::compileImplicit(text);
+            if (kind == PolynomialFormula) {
+                expr::toPolynomial(f.graph, f.value, sdfwb::algebra::Ring::make({"x", "y", "z"}));
+            }
             expr::gradient(f.graph, f.value);
             break;
         }
