@@ -131,7 +131,15 @@ public:
     // 1e5 a float ulp is 0.008 and grid lines came out fat and uneven).
     // footprintPerDistance: the width one sample spans at distance 1, by
     // which the shared code box-filters the pattern (material.glsl).
+    // A texture or bump map of the ground's material is mapped as on a plane
+    // primitive facing +y at the world's origin: (u, v) run along world x
+    // and z, so the texture stays on the floor as the eye moves.
     int compileGround(const scene::Ground& ground, const dvec3& eye, double footprintPerDistance) {
+        scene::Node plane = scene::Node::make(scene::NodeKind::Plane);
+        plane.set("material", ground.material);
+        const bool textured = hasTextureOrBump(plane);
+        dvec3 worldOffset = eye;
+        int world = textured ? materialize(0, worldOffset) : 0;
         int s = allocSample();
         dvec3 patternEye = eye;
         if (ground.cellSize > 0) {
@@ -142,6 +150,10 @@ public:
         int param = addParams({dvec4(ground.height - eye.y, pattern, footprintPerDistance, 0),
                                dvec4(patternEye, ground.cellSize), dvec4(ground.secondColor, ground.lineWidth)});
         emit({Opcode::Ground, s, 0, -1, param, materialSlot(ground.material), 0});
+        if (textured) {
+            texture(plane, s, world);
+            releasePoint();
+        }
         return s;
     }
 
@@ -294,9 +306,17 @@ private:
     // before they existed. The footprint is
     // converted to texture units: world widths shrink by the scale nodes
     // above the primitive (objectScale_), then by the texture's scale.
-    void texture(const Node& node, int sample, int point) {
+    const scene::Material& materialOf(const Node& node) const {
         auto it = materialIndex_.find(node.text("material"));
-        const scene::Material& m = it == materialIndex_.end() ? defaultMaterial_ : scene_.materials[it->second];
+        return it == materialIndex_.end() ? defaultMaterial_ : scene_.materials[it->second];
+    }
+    bool hasTextureOrBump(const Node& node) const {
+        const scene::Material& m = materialOf(node);
+        return m.texture != scene::TexturePattern::None || m.bump != scene::BumpPattern::None;
+    }
+
+    void texture(const Node& node, int sample, int point) {
+        const scene::Material& m = materialOf(node);
         const Instruction shape = program_.code.back();  // the primitive just emitted
         int gradient = -1;  // a formula's tape with its gradient, once, for its triplanar images
         if (m.texture == scene::TexturePattern::Image) {
@@ -616,12 +636,15 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     double footprintPerDistance = 2.0 * frame.tanHalfFov / (height * aa);
     compiler.footprintPerDistance = footprintPerDistance;
     int result = compiler.compile(scene.root, 0, frame.eye);
+    int groundStart = -1;
     if (scene.environment.ground.enabled) {
+        groundStart = static_cast<int>(compiler.program().code.size());
         int ground = compiler.compileGround(scene.environment.ground, frame.eye, footprintPerDistance);
         compiler.combine(Opcode::Union, result, ground, -1, 0);
     }
     Program program = std::move(compiler.program());
     program.result = result;
+    program.groundStart = groundStart;
     Bounds root = nodeBounds(scene.root);
     program.rootBounded = !root.empty && !root.infinite;
     if (program.rootBounded) {

@@ -83,6 +83,10 @@ struct Program {
     int pointRegisters = 1;  // register 0 holds the evaluation point
     int sampleRegisters = 1;
     int result = 0;          // sample register holding the scene's distance
+    // The ground plane's instructions run from here to the end, the last
+    // uniting it with the root's result (engine/prune copies them for the
+    // field outside its grid); -1: no ground.
+    int groundStart = -1;
 
     // March-coordinate box enclosing the scene's root (the ground excluded);
     // rootBounded is false when some of it is unbounded (engine/prune).

@@ -148,11 +148,13 @@ private:
     std::atomic<long> stored_{0};
 };
 
-// compileScene unions the ground plane last: Ground, then Union(result, ground).
+// compileScene unions the ground plane last: its block (the Ground
+// instruction, its texture's, if any) from Program::groundStart, then
+// Union(result, ground).
 bool endsWithGround(const program::Program& program) {
     size_t n = program.code.size();
-    return n >= 2 && program.code[n - 2].op == Opcode::Ground && program.code[n - 1].op == Opcode::Union &&
-           program.code[n - 1].a == program.result && program.code[n - 1].b == program.code[n - 2].dst;
+    return program.groundStart >= 0 && static_cast<size_t>(program.groundStart) + 2 <= n &&
+           program.code[n - 1].op == Opcode::Union && program.code[n - 1].a == program.result;
 }
 
 // Outside the grid the field is replaced by a safe step, the distance to the
@@ -201,8 +203,7 @@ std::vector<Instruction> outsideBoundCode(const program::Program& program) {
                                      {Opcode::ScaleDistance, r, r, 0, base + 2, -1, 0},
                                      {Opcode::StepScale, r, r, 0, base + 3, -1, 0}};
     if (endsWithGround(program)) {
-        code.push_back(program.code[program.code.size() - 2]);
-        code.push_back(program.code.back());
+        code.insert(code.end(), program.code.begin() + program.groundStart, program.code.end());
     }
     return code;
 }

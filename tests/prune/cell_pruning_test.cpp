@@ -29,6 +29,10 @@ struct Mismatch {
     int inside = 0;
     int distance = 0;  // points where d or step differ
     int material = 0;  // points where the material differs by more than 1e-6
+    // Outside the grid, points where the ground is nearer than the bound:
+    // its material there must be the whole program's (texture included).
+    int outsideOnGround = 0;
+    int groundMaterial = 0;
 };
 
 bool materialsClose(const t32::Material& a, const t32::Material& b) {
@@ -55,7 +59,12 @@ Mismatch compareFields(const program::Program& program, int count) {
         t32::Sample pruned = t32::fieldAt(program, grid.get(), params.data(), scratch, p);
         ++m.points;
         if (prune::leafIndexAt(*grid, p) == grid->outsideLeaf) {
-            continue;  // outside: the distance to the bounds, not the field
+            // outside: the distance to the bounds, not the field, unless the ground is nearer
+            if (program.groundStart >= 0 && pruned.d == full.d) {
+                ++m.outsideOnGround;
+                if (!materialsClose(pruned.material, full.material)) ++m.groundMaterial;
+            }
+            continue;
         }
         ++m.inside;
         if (!(pruned.d == full.d && pruned.step == full.step)) ++m.distance;
@@ -71,6 +80,17 @@ TEST_P(EveryScene, PrunedFieldEqualsTheWholeProgramInsideTheGrid) {
     Mismatch m = compareFields(program, 3000);
     EXPECT_EQ(m.distance, 0) << m.inside << " points inside the grid";
     EXPECT_EQ(m.material, 0) << m.inside << " points inside the grid";
+    EXPECT_EQ(m.groundMaterial, 0) << m.outsideOnGround << " points outside the grid on the ground";
+}
+
+// The field outside the grid unites the ground with the bound, and a textured
+// ground there keeps its texture and bump map.
+TEST(OutsideTheGrid, TheGroundKeepsItsTexture) {
+    program::Program program =
+        program::compileScene(scene::loadSceneFile(test::SceneFile{"showcase/courtyard.json"}.path()));
+    Mismatch m = compareFields(program, 3000);
+    EXPECT_GT(m.outsideOnGround, 20);
+    EXPECT_EQ(m.groundMaterial, 0) << m.outsideOnGround << " points outside the grid on the ground";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(test::allSceneFiles()),
