@@ -253,6 +253,9 @@ struct SampleDriver : Texels {
 
     vec4 P(int slot) const { return params[slot]; }
     Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p, *this, withMaterial); }
+    // setMaterialReads has decided what map() carries
+    Sample mapDistance(vec3 p) { return map(p); }
+    bool materialSampledApart() const { return distanceOnlyAllowed && materialPhaseApart(sceneMaterialReads); }
     bool secondaryRays() const { return program.secondaryRays; }
     bool environmentMap() const { return images != nullptr && images->environment != nullptr; }
     bool imageTextures() const { return !program.textureFiles.empty(); }

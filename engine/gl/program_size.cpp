@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "gl/fold_run.h"
+#include "sdf/shared.h"
 
 namespace sdfwb::gl {
 
@@ -17,6 +18,11 @@ std::size_t shaderStatementCount(const program::Program& program) {
         count += formula.tape.instructions().size();
     }
     return count;
+}
+
+bool materialSampledApart(const program::Program& program) {
+    return program.distanceOnlyEvaluation && sdf::f64::materialPhaseApart(program.materialReads()) &&
+           2 * shaderStatementCount(program) <= kMaxShaderStatements;
 }
 
 std::string shaderSizeProblem(const program::Program& program) {

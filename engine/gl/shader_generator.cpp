@@ -5,6 +5,7 @@
 
 #include "expr/glsl.h"
 #include "gl/fold_run.h"
+#include "gl/program_size.h"
 #include "prune/prune_grid.h"
 #include "sdf/glsl_sources.h"
 #include "sdf/shared.h"
@@ -175,17 +176,14 @@ void emitFoldLoop(std::ostringstream& out, const program::Program& program, cons
     out << "    }\n";
 }
 
-std::string generateMapFunction(const program::Program& program) {
-    std::ostringstream out;
-    for (size_t i = 0; i < program.formulas.size(); ++i) {
-        out << "\n" << expr::emitGlslFunction(program.formulas[i].tape,
-                                              {formulaName(static_cast<int>(i)), "vec3 p", {"p.x", "p.y", "p.z"}});
-    }
-    std::optional<FoldRun> run = findFoldRun(program);
-    if (run) {
-        out << kFoldInputs << sdf::glslPruneLookup();
-    }
-    out << "\nSample map(vec3 p) {\n";
+namespace {
+
+// map(p), the field with its materials, or mapDistance(p), the same code
+// returning the distances alone: the compiler then drops every material
+// load and blend from it.
+void emitMapFunction(std::ostringstream& out, const program::Program& program, const std::optional<FoldRun>& run,
+                     bool distanceOnly) {
+    out << "\nSample " << (distanceOnly ? "mapDistance" : "map") << "(vec3 p) {\n";
     out << "    vec3 p0 = p;\n";
     for (int r = 1; r < program.pointRegisters; ++r) {
         out << "    vec3 " << point(r) << ";\n";
@@ -209,7 +207,32 @@ std::string generateMapFunction(const program::Program& program) {
         }
         out << "    }\n";
     }
-    out << "    return " << sample(program.result) << ";\n}\n";
+    const std::string result = sample(program.result);
+    if (distanceOnly) {
+        out << "    return Sample(" << result << ".d, " << result << ".step, noMaterial());\n}\n";
+    } else {
+        out << "    return " << result << ";\n}\n";
+    }
+}
+
+}  // namespace
+
+std::string generateMapFunction(const program::Program& program) {
+    std::ostringstream out;
+    for (size_t i = 0; i < program.formulas.size(); ++i) {
+        out << "\n" << expr::emitGlslFunction(program.formulas[i].tape,
+                                              {formulaName(static_cast<int>(i)), "vec3 p", {"p.x", "p.y", "p.z"}});
+    }
+    std::optional<FoldRun> run = findFoldRun(program);
+    if (run) {
+        out << kFoldInputs << sdf::glslPruneLookup();
+    }
+    emitMapFunction(out, program, run, false);
+    if (materialSampledApart(program)) {
+        emitMapFunction(out, program, run, true);
+    } else {
+        out << "Sample mapDistance(vec3 p) { return map(p); }\n";
+    }
     return out.str();
 }
 
@@ -227,8 +250,10 @@ std::string generateFragmentShader(const program::Program& program) {
         << "bool environmentMap() { return " << (environmentMap ? "true" : "false") << "; }\n"
         << "bool imageTextures() { return " << (program.textureFiles.empty() ? "false" : "true") << "; }\n"
         << "int materialSamplesPerHit() { return " << program.materialSamplesPerHit() << "; }\n"
-        // every map() carries the material: llvmpipe would run a branch that
-        // leaves it out on every lane anyway (docs/toolchain-notes.md)
+        // a constant: without it the driver's loop compiles one map(), which carries the material
+        << "bool materialSampledApart() { return " << (materialSampledApart(program) ? "true" : "false") << "; }\n"
+        // map() and mapDistance() are fixed functions: a branch between
+        // them would run both on every lane (docs/toolchain-notes.md)
         << "void setMaterialReads(int reads) {}\n"
         << sdf::glslEnvironmentLookup() << sdf::glslSampleDriver() << kMain;
     return out.str();

@@ -23,8 +23,11 @@ std::string_view parameterAccessSource();
 // texture lookup, which map() calls; after parameterAccessSource().
 std::string textureAccessSource(bool texels);
 
-// The program's formulas and its map(vec3 p): straight-line code over its
-// instructions, after the shared library and parameterAccessSource().
+// The program's formulas, its map(vec3 p): straight-line code over its
+// instructions (a fold run's as a loop), and mapDistance(vec3 p), which the
+// driver calls where it reads distances only: the same code returning no
+// material where materialSampledApart(program) (gl/program_size.h), else
+// map() itself. After the shared library and parameterAccessSource().
 std::string generateMapFunction(const program::Program& program);
 
 // The fragment shader for `program`; depends only on its structure

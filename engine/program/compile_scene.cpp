@@ -729,6 +729,10 @@ std::uint64_t Program::structureKey() const {
     mix(sampleRegisters);
     mix(secondaryRays);
     mix(imageBumps);
+    // whether the material phase is sampled apart (gl/program_size.h): a
+    // material's transparency turning on or off changes the driver's loops
+    mix(materialReads());
+    mix(distanceOnlyEvaluation);
     mix(environmentKind != shared::ENVIRONMENT_COLOR);
     mix(result);
     for (const FormulaCode& formula : formulas) {

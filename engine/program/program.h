@@ -94,8 +94,9 @@ struct Program {
     glm::dvec3 rootMin{0.0};
     glm::dvec3 rootMax{0.0};
     bool prune = true;  // debug switch: false evaluates the whole program everywhere
-    // debug switch: false makes the CPU backend carry materials through every
-    // evaluation, not only those that read them (cpu/interpreter.inl)
+    // debug switch: false makes both backends carry materials through every
+    // evaluation, not only those that read them (cpu/interpreter.inl,
+    // gl/program_size.h's materialSampledApart)
     bool distanceOnlyEvaluation = true;
 
     CameraParams camera;

@@ -137,9 +137,11 @@ double secondsOf(const std::function<void()>& work) {
 // GL: the grid (built apart, as the window does on a background thread),
 // the program's build (generation, compile, link and the first draw, where
 // llvmpipe compiles the shader to machine code), then the time of a second
-// render.
+// render. range(1): 1 distance-only evaluations where they do, 0 materials
+// carried through every evaluation.
 void BM_Gl(benchmark::State& state) {
     program::Program p = compiled(static_cast<int>(state.range(0)), true);
+    p.distanceOnlyEvaluation = state.range(1) != 0;
     double grid = secondsOf([&] { prune::pruneGridFor(p); });
     gl::GlRenderer renderer(context().gl());
     double build = 0;
@@ -156,7 +158,8 @@ void BM_Gl(benchmark::State& state) {
     for (auto _ : state) {
         benchmark::DoNotOptimize(renderer.render(p));
     }
-    state.SetLabel(cases()[static_cast<size_t>(state.range(0))].name);
+    state.SetLabel(std::string(cases()[static_cast<size_t>(state.range(0))].name) +
+                   (p.distanceOnlyEvaluation ? "" : " materials"));
     state.counters["grid_s"] = grid;
     state.counters["build_s"] = build;
     state.counters["s_per_px"] = benchmark::Counter(kWidth * kHeight, benchmark::Counter::kIsIterationInvariantRate |
@@ -210,7 +213,7 @@ void BM_SceneSuiteCpuOverGl(benchmark::State& state) {
 BENCHMARK(BM_SceneSuiteCpuOverGl)->Arg(1)->Arg(0)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 // the molecules on GL (fold loops)
-BENCHMARK(BM_Gl)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_Gl)->ArgsProduct({benchmark::CreateDenseRange(0, 5, 1), {1, 0}})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 // The console table, then the per-pixel cost ratios the docs quote, all from
 // this run: 100 / 10 and 1001 / 10 for each backend and scene family, and
@@ -252,6 +255,11 @@ public:
         for (const Case& c : cases()) {
             std::printf("%-18s %12s\n", c.name,
                         ratio(std::string("BM_Cpu materials ") + c.name, std::string("BM_Cpu pruned ") + c.name).c_str());
+        }
+        std::printf("\nGL: materials at every evaluation / distance-only evaluation, per pixel\n");
+        for (const Case& c : cases()) {
+            std::string r = ratio(std::string("BM_Gl materials ") + c.name, std::string("BM_Gl ") + c.name);
+            if (r != "-") std::printf("%-18s %12s\n", c.name, r.c_str());  // BM_Gl covers the molecules
         }
         std::printf("\nCPU pruned / GL per pixel (GL's second render)\n");
         for (const char* scene : {"molecule_10", "molecule_100", "molecule_hard_10", "molecule_hard_100"}) {

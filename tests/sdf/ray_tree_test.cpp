@@ -78,6 +78,9 @@ struct AnalyticDriver {
 
     vec4 P(int slot) const { return params[static_cast<size_t>(slot)]; }
     Sample map(vec3 p) const { return field(p); }
+    Sample mapDistance(vec3 p) const { return field(p); }
+    // the driver's longer path: each material sample taken by its outer loop
+    bool materialSampledApart() const { return true; }
     bool secondaryRays() const { return true; }
     bool environmentMap() const { return !texels.empty(); }
     bool imageTextures() const { return false; }

@@ -7,11 +7,14 @@
 // evaluations the material phase takes (tracer.glsl's TraceState),
 // setTextureStretch(k), which widens the footprint of the next map()'s image
 // textures (texture_lookup.glsl), and setMaterialReads(bits), which
-// material fields the next map() is read for (traceMaterialReads). GLSL: the
-// generated functions before it; C++: members of the struct this file is
-// included in (cpu/interpreter.inl).
-// One call site of map() (compile cost grows with call sites, see
-// docs/toolchain-notes.md).
+// material fields the next map() is read for (traceMaterialReads),
+// mapDistance(p), the field where only its distances are read, and
+// materialSampledApart(), whether the material phase's evaluations are taken
+// apart from the others (traceSample). GLSL: the generated functions before
+// it; C++: members of the struct this file is included in
+// (cpu/interpreter.inl).
+// One call site of map() and one of mapDistance() (compile cost grows with
+// call sites, see docs/toolchain-notes.md).
 
 SHARED_FN TraceSettings sceneTraceSettings() {
     return traceSettingsFromSlots(P(TRACE_SLOT), P(TRACE_SLOT + 1), P(TRACE_SLOT + 2), P(TRACE_SLOT + 3),
@@ -29,12 +32,35 @@ SHARED_FN Light sceneLight(int index) {
     return lightFromSlots(P(slot), P(slot + 1));
 }
 
+// Readies the backend for the evaluation state s asks for next.
+SHARED_FN void prepareSample(TraceState s) {
+    if (imageTextures()) {
+        setTextureStretch(textureFootprintStretch(s));
+    }
+    setMaterialReads(traceMaterialReads(s));
+}
+
+// The field as the ray sees it: inside a solid it is negated (ray_tree.glsl).
+SHARED_FN Sample fieldSeenBy(TraceState s, Sample field) {
+    if (secondaryRays() && s.inside) {
+        return insideSample(field);
+    }
+    return field;
+}
+
 // One sub-sample at (px, py) pixels from the bottom-left corner of a
 // width x height image. The loop ends at PHASE_DONE; traceIterationBound caps
 // it for both backends alike (llvmpipe's limiter, docs/toolchain-notes.md).
 // A scene with mirrors or glass (secondaryRays(), supplied by the backend
 // with P and map: a constant in GLSL, so other scenes compile none of it)
 // walks its ray tree in the same loop, under rayTreeIterationBound.
+// Where materialSampledApart(), the inner loop evaluates mapDistance() only
+// and leaves when the next evaluation is the material phase's; the outer
+// loop takes that one with map() and the inner loop goes on with it. The
+// evaluations and their order are those of a single loop; the point is
+// llvmpipe's, which runs every line of a loop's body on every pass for all
+// its lanes (docs/toolchain-notes.md): a map() in the inner loop would cost
+// its material work at every step of every phase.
 SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     TraceSettings settings = sceneTraceSettings();
     // a pixel's angular width at the image centre: the footprint of rays
@@ -47,35 +73,46 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     Sample field = shapeSample(real(0), s.material);
     RayTree tree = rayTreeBegin();
     int limit = secondaryRays() ? rayTreeIterationBound(settings) : traceIterationBound(settings);
-    for (int i = 0; i < limit; ++i) {
-        Light light = sceneLight(lightIndex(s));
-        if (traceNeedsSample(s)) {
-            if (imageTextures()) {
-                setTextureStretch(textureFootprintStretch(s));
+    int i = 0;
+    bool sampled = false;  // field is the material sample the inner loop needs next
+    bool finished = false;
+    while (!finished && i < limit) {
+        for (; i < limit; ++i) {
+            Light light = sceneLight(lightIndex(s));
+            if (traceNeedsSample(s) && !sampled) {
+                if (materialSampledApart() && traceMaterialReads(s) == MATERIAL_READS_SHADING) {
+                    break;
+                }
+                prepareSample(s);
+                field = fieldSeenBy(s, mapDistance(tracePoint(s, light, settings)));
+                s.evaluations = s.evaluations + 1;
             }
-            setMaterialReads(traceMaterialReads(s));
-            field = map(tracePoint(s, light, settings));
-            s.evaluations = s.evaluations + 1;
-            if (secondaryRays() && s.inside) {
-                field = insideSample(field);
+            sampled = false;
+            s = traceAdvance(s, field, light, settings);
+            if (s.phase == PHASE_DONE) {
+                if (environmentMap() && !s.hit) {
+                    s.color = environmentRadiance(s.rayDirection, pixelAngle);
+                }
+                if (!secondaryRays()) {
+                    finished = true;
+                    break;
+                }
+                tree = rayTreeFinishRay(tree, s, settings);
+                if (tree.pending == 0) {
+                    finished = true;
+                    break;
+                }
+                s = traceBeginNode(rayTreeTop(tree));
+                s.materialSamples = materialSamplesPerHit();
+                s.pixelAngle = pixelAngle;
+                tree = rayTreePop(tree);
             }
         }
-        s = traceAdvance(s, field, light, settings);
-        if (s.phase == PHASE_DONE) {
-            if (environmentMap() && !s.hit) {
-                s.color = environmentRadiance(s.rayDirection, pixelAngle);
-            }
-            if (!secondaryRays()) {
-                break;
-            }
-            tree = rayTreeFinishRay(tree, s, settings);
-            if (tree.pending == 0) {
-                break;
-            }
-            s = traceBeginNode(rayTreeTop(tree));
-            s.materialSamples = materialSamplesPerHit();
-            s.pixelAngle = pixelAngle;
-            tree = rayTreePop(tree);
+        if (materialSampledApart() && !finished && i < limit) {
+            prepareSample(s);
+            field = fieldSeenBy(s, map(tracePoint(s, sceneLight(lightIndex(s)), settings)));
+            s.evaluations = s.evaluations + 1;
+            sampled = true;
         }
     }
     if (secondaryRays()) {

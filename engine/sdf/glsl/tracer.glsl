@@ -159,6 +159,11 @@ SHARED_FN int traceMaterialReads(TraceState s) {
     return MATERIAL_READS_NONE;
 }
 
+// Whether a scene whose evaluations read `sceneReads` (Program::materialReads)
+// can take its material phase's evaluations apart from the others
+// (sample_driver.glsl): then no other evaluation reads its materials.
+SHARED_FN bool materialPhaseApart(int sceneReads) { return sceneReads == MATERIAL_READS_SHADING; }
+
 // Image textures take their mip level from the footprint of a pixel across
 // the ray (texture_lookup.glsl); on a surface seen at a slant the footprint
 // is longer along it by 1 / cos, where a level that small would alias (moire
