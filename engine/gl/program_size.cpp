@@ -21,7 +21,11 @@ std::size_t shaderStatementCount(const program::Program& program) {
 }
 
 bool materialSampledApart(const program::Program& program) {
-    return program.distanceOnlyEvaluation && sdf::f64::materialPhaseApart(program.materialReads()) &&
+    // a ray tree's lanes meet their material samples at different points of
+    // their trees, so a split loop could take up to twice the back-edges
+    // llvmpipe counts (worstCaseBackEdges); single rays meet them in order
+    return program.distanceOnlyEvaluation && !program.secondaryRays &&
+           sdf::f64::materialPhaseApart(program.materialReads()) &&
            2 * shaderStatementCount(program) <= kMaxShaderStatements;
 }
 

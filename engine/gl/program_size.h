@@ -24,7 +24,7 @@ inline constexpr std::size_t kMaxShaderStatements = 1500;
 // (sdf/glsl/sample_driver.glsl): no other evaluation of the scene reads a
 // material, and its map() fits the bound twice, as the distance-only
 // mapDistance() the others run is a second copy of it. Never with
-// Program::distanceOnlyEvaluation off.
+// Program::distanceOnlyEvaluation off, nor for a scene with mirrors or glass.
 bool materialSampledApart(const program::Program& program);
 
 // "" when the program fits, else one line naming the size and the way out.

@@ -268,7 +268,14 @@ int worstCaseBackEdges(const program::Program& program) {
     settings.lightCount = static_cast<int>(program.lights.size());
     settings.maxDepth = t.maxDepth;
     static_assert(sdf::f32::RAY_TREE_ITERATION_CAP < kLoopLimiter);
-    return program.secondaryRays ? sdf::f32::rayTreeIterationBound(settings) : sdf::f32::traceIterationBound(settings);
+    if (program.secondaryRays) {
+        return sdf::f32::rayTreeIterationBound(settings);
+    }
+    // Split (sample_driver.glsl): the lanes' inner runs cover the march, then
+    // the phases after the material, so each run stays within its phases'
+    // share of the bound; the outer loop adds one back-edge a material sample.
+    int outer = materialSampledApart(program) ? program.materialSamplesPerHit() + 1 : 0;
+    return sdf::f32::traceIterationBound(settings) + outer;
 }
 
 }  // namespace sdfwb::gl

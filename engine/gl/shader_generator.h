@@ -36,8 +36,10 @@ std::string generateFragmentShader(const program::Program& program);
 
 // llvmpipe stops any fragment invocation after 65535 loop back-edges and then
 // continues silently with wrong values (docs/toolchain-notes.md). One pass runs
-// at most traceIterationBound() iterations of the driver loop and map() has no
-// loops, so this is the pass's worst case; it must stay below the limit.
+// at most traceIterationBound() iterations of the driver's loops (plus the
+// outer loop's, where the material is sampled apart), so this is the pass's
+// worst case outside map(); a fold loop in map() multiplies it
+// (gl_renderer.cpp). It must stay below the limit.
 inline constexpr int kLoopLimiter = 65535;
 int worstCaseBackEdges(const program::Program& program);
 

@@ -27,6 +27,7 @@ TEST(MaterialApart, OnlyWhereNoOtherEvaluationReadsAMaterial) {
     EXPECT_TRUE(gl::materialSampledApart(compiledFile("default.json")));
     // image bump maps are differentiated in the material phase
     EXPECT_TRUE(gl::materialSampledApart(compiledFile("tutorial/14_image_textures.json")));
+    EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/08_mirrors.json")));   // a ray tree
     EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/09_glass.json")));     // shadows read transparency
     EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/13_bump_map.json")));  // normals read the height
     EXPECT_FALSE(gl::materialSampledApart(compiledFile("showcase/courtyard.json")));    // a noise bump map too
