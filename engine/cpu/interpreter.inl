@@ -249,13 +249,15 @@ struct SampleDriver : Texels {
     Scratch& scratch;
     bool distanceOnlyAllowed;  // Program::distanceOnlyEvaluation, the debug switch
     int sceneMaterialReads;    // the fields worth a material (Program::materialReads)
+    bool materialApart;        // Program::materialPhaseApart
     bool withMaterial = true;
 
     vec4 P(int slot) const { return params[slot]; }
     Sample map(vec3 p) { return fieldAt(program, grid, params, scratch, p, *this, withMaterial); }
     // setMaterialReads has decided what map() carries
     Sample mapDistance(vec3 p) { return map(p); }
-    bool materialSampledApart() const { return distanceOnlyAllowed && materialPhaseApart(sceneMaterialReads); }
+    Sample mapMaterial(vec3 p) { return map(p); }
+    bool materialSampledApart() const { return materialApart; }
     bool secondaryRays() const { return program.secondaryRays; }
     bool environmentMap() const { return images != nullptr && images->environment != nullptr; }
     bool imageTextures() const { return !program.textureFiles.empty(); }
@@ -292,11 +294,13 @@ struct Kernel {
     // (Program::materialReads): an evaluation that reads none of them
     // leaves the materials out.
     int materialReads;
+    bool materialApart;  // Program::materialPhaseApart, computed once
 
     explicit Kernel(const program::Program& p, FieldSource source = FieldSource::Pruned)
         : program(p),
           grid(gridFrom(p, source)),
-          materialReads(p.materialReads()) {
+          materialReads(p.materialReads()),
+          materialApart(p.materialPhaseApart()) {
         for (const glm::dvec4& v : p.params) {
             params.push_back(vec4(v));
         }
@@ -329,7 +333,8 @@ struct Kernel {
 
     SampleResult trace(Scratch& scratch, real px, real py) const {
         bool distanceOnly = program.distanceOnlyEvaluation;
-        SampleDriver driver{{&images}, program, grid.get(), params.data(), scratch, distanceOnly, materialReads};
+        SampleDriver driver{{&images}, program, grid.get(), params.data(), scratch, distanceOnly, materialReads,
+                            materialApart};
         TraceState s = driver.traceSample(px, py, real(program.width), real(program.height));
         return SampleResult{s.color, s.steps, s.evaluations, s.hit, s.t};
     }

@@ -3,7 +3,6 @@
 #include <optional>
 
 #include "gl/fold_run.h"
-#include "sdf/shared.h"
 
 namespace sdfwb::gl {
 
@@ -21,12 +20,7 @@ std::size_t shaderStatementCount(const program::Program& program) {
 }
 
 bool materialSampledApart(const program::Program& program) {
-    // a ray tree's lanes meet their material samples at different points of
-    // their trees, so a split loop could take up to twice the back-edges
-    // llvmpipe counts (worstCaseBackEdges); single rays meet them in order
-    return program.distanceOnlyEvaluation && !program.secondaryRays &&
-           sdf::f64::materialPhaseApart(program.materialReads()) &&
-           2 * shaderStatementCount(program) <= kMaxShaderStatements;
+    return program.materialPhaseApart() && 2 * shaderStatementCount(program) <= kMaxShaderStatements;
 }
 
 std::string shaderSizeProblem(const program::Program& program) {

@@ -21,10 +21,8 @@ std::size_t shaderStatementCount(const program::Program& program);
 inline constexpr std::size_t kMaxShaderStatements = 1500;
 
 // Whether the fragment shader takes the material phase's evaluations apart
-// (sdf/glsl/sample_driver.glsl): no other evaluation of the scene reads a
-// material, and its map() fits the bound twice, as the distance-only
-// mapDistance() the others run is a second copy of it. Never with
-// Program::distanceOnlyEvaluation off, nor for a scene with mirrors or glass.
+// (Program::materialPhaseApart) with its map() fitting the size bound twice,
+// as the distance-only mapDistance() the others run is a second copy of it.
 bool materialSampledApart(const program::Program& program);
 
 // "" when the program fits, else one line naming the size and the way out.

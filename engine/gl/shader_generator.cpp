@@ -228,10 +228,14 @@ std::string generateMapFunction(const program::Program& program) {
         out << kFoldInputs << sdf::glslPruneLookup();
     }
     emitMapFunction(out, program, run, false);
+    // one call site of map(): the other driver function is a copy without
+    // materials, or never called (materialSampledApart() is a constant)
     if (materialSampledApart(program)) {
         emitMapFunction(out, program, run, true);
+        out << "Sample mapMaterial(vec3 p) { return map(p); }\n";
     } else {
-        out << "Sample mapDistance(vec3 p) { return map(p); }\n";
+        out << "Sample mapDistance(vec3 p) { return map(p); }\n"
+            << "Sample mapMaterial(vec3 p) { return shapeSample(0.0, noMaterial()); }\n";
     }
     return out.str();
 }
@@ -273,8 +277,11 @@ int worstCaseBackEdges(const program::Program& program) {
     }
     // Split (sample_driver.glsl): the lanes' inner runs cover the march, then
     // the phases after the material, so each run stays within its phases'
-    // share of the bound; the outer loop adds one back-edge a material sample.
-    int outer = materialSampledApart(program) ? program.materialSamplesPerHit() + 1 : 0;
+    // share of the bound. Counted on top: the outer loop's passes (one a
+    // material sample, one to leave) and, to be safe, one pass per inner run
+    // in which every lane has already left.
+    int runs = program.materialSamplesPerHit() + 1;
+    int outer = materialSampledApart(program) ? 2 * runs + 1 : 0;
     return sdf::f32::traceIterationBound(settings) + outer;
 }
 

@@ -24,10 +24,11 @@ std::string_view parameterAccessSource();
 std::string textureAccessSource(bool texels);
 
 // The program's formulas, its map(vec3 p): straight-line code over its
-// instructions (a fold run's as a loop), and mapDistance(vec3 p), which the
-// driver calls where it reads distances only: the same code returning no
-// material where materialSampledApart(program) (gl/program_size.h), else
-// map() itself. After the shared library and parameterAccessSource().
+// instructions (a fold run's as a loop), and the driver's mapDistance and
+// mapMaterial (sample_driver.glsl): where materialSampledApart(program)
+// (gl/program_size.h), the same code returning no material and map(); else
+// map() and a stub the driver never calls. After the shared library and
+// parameterAccessSource().
 std::string generateMapFunction(const program::Program& program);
 
 // The fragment shader for `program`; depends only on its structure

@@ -152,7 +152,7 @@ public:
         emit({Opcode::Ground, s, 0, -1, param, materialSlot(ground.material), 0});
         if (textured) {
             texture(plane, s, world);
-            releasePoint();
+            if (world != 0) releasePoint();  // none taken with the eye at the origin
         }
         return s;
     }
@@ -708,39 +708,56 @@ int Program::materialReads() const {
            (bump ? shared::MATERIAL_READS_BUMP : 0);
 }
 
-std::uint64_t Program::structureKey() const {
+bool Program::materialPhaseApart() const {
+    return distanceOnlyEvaluation && !secondaryRays && shared::materialPhaseApart(materialReads());
+}
+
+namespace {
+
+// FNV-1a over 64-bit values, a byte at a time.
+struct KeyHash {
     std::uint64_t hash = 1469598103934665603ull;
-    auto mix = [&](std::int64_t value) {
+    void mix(std::int64_t value) {
         for (int i = 0; i < 8; ++i) {
             hash ^= static_cast<std::uint64_t>(value >> (8 * i)) & 0xffu;
             hash *= 1099511628211ull;
         }
-    };
+    }
+};
+
+}  // namespace
+
+std::uint64_t Program::codeKey() const {
+    KeyHash key;
     for (const Instruction& in : code) {
-        mix(static_cast<int>(in.op));
-        mix(in.dst);
-        mix(in.a);
-        mix(in.b);
-        mix(in.param);
-        mix(in.material);
-        mix(in.variant);
+        key.mix(static_cast<int>(in.op));
+        key.mix(in.dst);
+        key.mix(in.a);
+        key.mix(in.b);
+        key.mix(in.param);
+        key.mix(in.material);
+        key.mix(in.variant);
     }
-    mix(pointRegisters);
-    mix(sampleRegisters);
-    mix(secondaryRays);
-    mix(imageBumps);
-    // whether the material phase is sampled apart (gl/program_size.h): a
-    // material's transparency turning on or off changes the driver's loops
-    mix(materialReads());
-    mix(distanceOnlyEvaluation);
-    mix(environmentKind != shared::ENVIRONMENT_COLOR);
-    mix(result);
+    key.mix(pointRegisters);
+    key.mix(sampleRegisters);
+    key.mix(result);
     for (const FormulaCode& formula : formulas) {
-        mix(static_cast<int>(formula.language));
-        mix(formula.withGradient);
-        for (char c : formula.source) mix(c);
+        key.mix(static_cast<int>(formula.language));
+        key.mix(formula.withGradient);
+        for (char c : formula.source) key.mix(c);
     }
-    return hash;
+    return key.hash;
+}
+
+std::uint64_t Program::structureKey() const {
+    KeyHash key{codeKey()};
+    key.mix(secondaryRays);
+    key.mix(imageBumps);
+    // a material's transparency turning on or off in a scene without ray
+    // trees changes the driver's loops
+    key.mix(materialPhaseApart());
+    key.mix(environmentKind != shared::ENVIRONMENT_COLOR);
+    return key.hash;
 }
 
 }  // namespace sdfwb::program

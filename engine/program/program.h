@@ -143,11 +143,21 @@ struct Program {
     // procedural bump map (the normal). A backend may evaluate the phases
     // that read none of these for their distances only.
     int materialReads() const;
+    // Whether the driver may take the material phase's evaluations apart
+    // from the others and run those on distances alone
+    // (sdf/glsl/sample_driver.glsl): only the material phase reads materials,
+    // rays do not branch (a ray tree's lanes would meet their material
+    // samples out of step, doubling the loop back-edges llvmpipe counts) and
+    // distance-only evaluation is on. Structural (structureKey).
+    bool materialPhaseApart() const;
     int width = 0;
     int height = 0;
     int aa = 1;
 
-    // Hash of everything that shapes generated code (instructions and the
+    // Hash of the instructions, registers and formulas (prune grids are
+    // keyed by it with the parameters they read).
+    std::uint64_t codeKey() const;
+    // Hash of everything that shapes generated code (codeKey and the
     // structural settings); equal keys can share a compiled shader.
     std::uint64_t structureKey() const;
 };

@@ -152,9 +152,12 @@ private:
 // instruction, its texture's, if any) from Program::groundStart, then
 // Union(result, ground).
 bool endsWithGround(const program::Program& program) {
-    size_t n = program.code.size();
-    return program.groundStart >= 0 && static_cast<size_t>(program.groundStart) + 2 <= n &&
-           program.code[n - 1].op == Opcode::Union && program.code[n - 1].a == program.result;
+    size_t n = program.code.size(), start = static_cast<size_t>(program.groundStart);
+    if (program.groundStart < 0 || start + 2 > n) return false;
+    // the ground's world point first when it is textured
+    size_t ground = program.code[start].op == Opcode::Translate ? start + 1 : start;
+    return ground + 1 < n && program.code[ground].op == Opcode::Ground && program.code[n - 1].op == Opcode::Union &&
+           program.code[n - 1].a == program.result && program.code[n - 1].b == program.code[ground].dst;
 }
 
 // Outside the grid the field is replaced by a safe step, the distance to the
@@ -276,7 +279,7 @@ namespace {
 // on distances alone, and a leaf reads every parameter when it runs, so a
 // colour edit keeps the grid), the bounds, what gridMargin reads and the switch.
 std::uint64_t gridKey(const program::Program& program) {
-    std::uint64_t hash = program.structureKey();
+    std::uint64_t hash = program.codeKey();
     auto mix = [&](const void* data, size_t size) {
         const unsigned char* bytes = static_cast<const unsigned char*>(data);
         for (size_t i = 0; i < size; ++i) {

@@ -47,14 +47,22 @@ scene::Material checkerFloor() {
     return m;
 }
 
-// The ground's diffuse colour at a world point on the floor, seen from the scene's eye.
-dvec3 floorDiffuse(const scene::Scene& s, dvec3 world) {
-    program::Program program = program::compileScene(s);
-    cpu::f64::Kernel kernel(program, cpu::f64::FieldSource::Whole);
-    cpu::f64::Scratch scratch(program);
-    dvec3 eye = scene::cameraFrame(s.camera).eye;
-    return dvec3(kernel.map(scratch, world - eye).material.diffuse);
-}
+// The ground's diffuse colour at world points on the floor, seen from the scene's eye.
+class FloorProbe {
+public:
+    explicit FloorProbe(const scene::Scene& s)
+        : program_(program::compileScene(s)),
+          kernel_(program_, cpu::f64::FieldSource::Whole),
+          scratch_(program_),
+          eye_(scene::cameraFrame(s.camera).eye) {}
+    dvec3 diffuse(dvec3 world) { return dvec3(kernel_.map(scratch_, world - eye_).material.diffuse); }
+
+private:
+    program::Program program_;
+    cpu::f64::Kernel kernel_;
+    cpu::f64::Scratch scratch_;
+    dvec3 eye_;
+};
 
 TEST(GroundTexture, ItsTextureStaysOnTheFloorAsTheCameraMoves) {
     scene::Scene near = groundScene(checkerFloor());
@@ -62,11 +70,12 @@ TEST(GroundTexture, ItsTextureStaysOnTheFloorAsTheCameraMoves) {
     far.camera.target = dvec3(40, 2, -25);
     far.camera.azimuth = 130;
     far.camera.distance = 9;
+    FloorProbe fromNear(near), fromFar(far);
     int light = 0, dark = 0;
     for (double x = -1.9; x < 2; x += 0.37) {
         for (double z = -1.7; z < 2; z += 0.41) {
             dvec3 world(x, kFloor, z);
-            dvec3 a = floorDiffuse(near, world), b = floorDiffuse(far, world);
+            dvec3 a = fromNear.diffuse(world), b = fromFar.diffuse(world);
             EXPECT_NEAR(a.x, b.x, 1e-9) << "at x " << x << ", z " << z;
             (a.x > 0.5 ? light : dark) += 1;
         }

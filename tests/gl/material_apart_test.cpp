@@ -23,28 +23,42 @@ program::Program compiledFile(const std::string& relative) {
                                  {.width = 64, .height = 36, .aa = 1});
 }
 
+// The default scene without its ray tree (max_depth 0): opaque, no bump map.
+scene::Scene singleRays() {
+    scene::Scene s = scene::loadSceneFile(test::SceneFile{"default.json"}.path());
+    s.render.maxDepth = 0;
+    return s;
+}
+
 TEST(MaterialApart, OnlyWhereNoOtherEvaluationReadsAMaterial) {
-    EXPECT_TRUE(gl::materialSampledApart(compiledFile("default.json")));
+    scene::Scene s = singleRays();
+    EXPECT_TRUE(gl::materialSampledApart(program::compileScene(s)));
     // image bump maps are differentiated in the material phase
     EXPECT_TRUE(gl::materialSampledApart(compiledFile("tutorial/14_image_textures.json")));
-    EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/08_mirrors.json")));   // a ray tree
-    EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/09_glass.json")));     // shadows read transparency
-    EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/13_bump_map.json")));  // normals read the height
-    EXPECT_FALSE(gl::materialSampledApart(compiledFile("showcase/courtyard.json")));    // a noise bump map too
-    program::Program off = compiledFile("default.json");
+    EXPECT_FALSE(gl::materialSampledApart(compiledFile("tutorial/08_mirrors.json")));  // a ray tree
+
+    ASSERT_FALSE(s.materials.empty());
+    scene::Scene glass = s;
+    glass.materials[0].transparency = 0.5;  // shadows read the transparency
+    EXPECT_FALSE(gl::materialSampledApart(program::compileScene(glass)));
+    scene::Scene bumpy = s;
+    bumpy.materials[0].bump = scene::BumpPattern::Noise;  // normals read the height
+    EXPECT_FALSE(gl::materialSampledApart(program::compileScene(bumpy)));
+
+    program::Program off = program::compileScene(s);
     off.distanceOnlyEvaluation = false;
     EXPECT_FALSE(gl::materialSampledApart(off));
 }
 
-TEST(MaterialApart, ATransparencyTurningOnChangesTheStructure) {
-    scene::Scene s = scene::loadSceneFile(test::SceneFile{"default.json"}.path());
+TEST(MaterialApart, ATransparencyTurningOnChangesTheShaderNotTheGrid) {
+    scene::Scene s = singleRays();
     program::Program opaque = program::compileScene(s);
     std::string shader = gl::generateFragmentShader(opaque);
     EXPECT_NE(shader.find("Sample mapDistance(vec3 p) {\n"), std::string::npos);  // a distance-only copy
-    ASSERT_FALSE(s.materials.empty());
     s.materials[0].transparency = 0.5;
     program::Program glass = program::compileScene(s);
     EXPECT_NE(glass.structureKey(), opaque.structureKey());
+    EXPECT_EQ(glass.codeKey(), opaque.codeKey());  // what prune grids are keyed by
     EXPECT_NE(gl::generateFragmentShader(glass).find("Sample mapDistance(vec3 p) { return map(p); }"),
               std::string::npos);
 }
@@ -65,7 +79,7 @@ protected:
 };
 
 TEST_F(MaterialApartOnGl, RendersAsWithMaterialsAtEveryEvaluation) {
-    expectSameImage(compiledFile("default.json"), "default");
+    expectSameImage(program::compileScene(singleRays(), {.width = 64, .height = 36, .aa = 1}), "default");
     expectSameImage(compiledFile("tutorial/14_image_textures.json"), "image textures");  // five material samples a hit
     expectSameImage(compiledFile("showcase/chess.json"), "chess");
     expectSameImage(program::compileScene(test::moleculeScene("molecule_100"), {.width = 64, .height = 36, .aa = 1}),

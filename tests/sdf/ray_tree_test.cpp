@@ -75,18 +75,24 @@ struct AnalyticDriver {
     std::vector<vec4> params;
     std::function<Sample(vec3)> field;
     std::vector<vec4> texels = {};  // an environment map's, if any
+    int reads = MATERIAL_READS_SHADING;  // what the next evaluation reads (setMaterialReads)
 
     vec4 P(int slot) const { return params[static_cast<size_t>(slot)]; }
-    Sample map(vec3 p) const { return field(p); }
-    Sample mapDistance(vec3 p) const { return field(p); }
-    // the driver's longer path: each material sample taken by its outer loop
+    // the driver's split loop: the material phase's samples taken by the outer
+    // loop; the other evaluations carry a material only where their phase
+    // reads one (the transparency, in shadows), as the CPU backend's do
     bool materialSampledApart() const { return true; }
+    Sample mapDistance(vec3 p) const {
+        Sample s = field(p);
+        return reads == MATERIAL_READS_NONE ? Sample(s.d, s.step, noMaterial()) : s;
+    }
+    Sample mapMaterial(vec3 p) const { return field(p); }
     bool secondaryRays() const { return true; }
     bool environmentMap() const { return !texels.empty(); }
     bool imageTextures() const { return false; }
     int materialSamplesPerHit() const { return 1; }
     void setTextureStretch(real) {}
-    void setMaterialReads(int) {}
+    void setMaterialReads(int r) { reads = r; }
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 
 #include "sdf/glsl/environment_lookup.glsl"

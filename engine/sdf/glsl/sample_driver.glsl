@@ -1,20 +1,21 @@
 // The per-sample driver loop, the same code in both backends, bound included.
 // It needs these from its backend: P(slot), a slot of the parameter buffer,
-// map(p), the scene's field, secondaryRays(), whether the scene has mirrors
-// or glass, environmentMap(), whether rays that leave the scene see an image
-// (environment_lookup.glsl, which reads T(i)), imageTextures(), whether
-// materials have image textures, materialSamplesPerHit(), how many
-// evaluations the material phase takes (tracer.glsl's TraceState),
-// setTextureStretch(k), which widens the footprint of the next map()'s image
-// textures (texture_lookup.glsl), and setMaterialReads(bits), which
-// material fields the next map() is read for (traceMaterialReads),
-// mapDistance(p), the field where only its distances are read, and
-// materialSampledApart(), whether the material phase's evaluations are taken
-// apart from the others (traceSample). GLSL: the generated functions before
-// it; C++: members of the struct this file is included in
-// (cpu/interpreter.inl).
-// One call site of map() and one of mapDistance() (compile cost grows with
-// call sites, see docs/toolchain-notes.md).
+// mapDistance(p), the scene's field for the driver's loop (its distances
+// alone where materialSampledApart(), else with materials), mapMaterial(p),
+// the field with materials for the material phase taken apart,
+// materialSampledApart(), whether it is taken apart (traceSample),
+// secondaryRays(), whether the scene has mirrors or glass, environmentMap(),
+// whether rays that leave the scene see an image (environment_lookup.glsl,
+// which reads T(i)), imageTextures(), whether materials have image textures,
+// materialSamplesPerHit(), how many evaluations the material phase takes
+// (tracer.glsl's TraceState), setTextureStretch(k), which widens the
+// footprint of the next evaluation's image textures (texture_lookup.glsl),
+// and setMaterialReads(bits), which material fields the next evaluation is
+// read for (traceMaterialReads). GLSL: the generated functions before it;
+// C++: members of the struct this file is included in (cpu/interpreter.inl).
+// One call site of each field (compile cost grows with call sites, see
+// docs/toolchain-notes.md); the GL backend makes the scene's map() the body
+// of only one of them.
 
 SHARED_FN TraceSettings sceneTraceSettings() {
     return traceSettingsFromSlots(P(TRACE_SLOT), P(TRACE_SLOT + 1), P(TRACE_SLOT + 2), P(TRACE_SLOT + 3),
@@ -56,11 +57,11 @@ SHARED_FN Sample fieldSeenBy(TraceState s, Sample field) {
 // walks its ray tree in the same loop, under rayTreeIterationBound.
 // Where materialSampledApart(), the inner loop evaluates mapDistance() only
 // and leaves when the next evaluation is the material phase's; the outer
-// loop takes that one with map() and the inner loop goes on with it. The
+// loop takes that one with mapMaterial() and the inner loop goes on with it. The
 // evaluations and their order are those of a single loop; the point is
 // llvmpipe's, which runs every line of a loop's body on every pass for all
-// its lanes (docs/toolchain-notes.md): a map() in the inner loop would cost
-// its material work at every step of every phase.
+// its lanes (docs/toolchain-notes.md): materials in the inner loop would cost
+// their work at every step of every phase.
 SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     TraceSettings settings = sceneTraceSettings();
     // a pixel's angular width at the image centre: the footprint of rays
@@ -110,7 +111,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
         }
         if (materialSampledApart() && !finished && i < limit) {
             prepareSample(s);
-            field = fieldSeenBy(s, map(tracePoint(s, sceneLight(lightIndex(s)), settings)));
+            field = fieldSeenBy(s, mapMaterial(tracePoint(s, sceneLight(lightIndex(s)), settings)));
             s.evaluations = s.evaluations + 1;
             sampled = true;
         }
