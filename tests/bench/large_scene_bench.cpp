@@ -213,7 +213,11 @@ void BM_SceneSuiteCpuOverGl(benchmark::State& state) {
 BENCHMARK(BM_SceneSuiteCpuOverGl)->Arg(1)->Arg(0)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 // the molecules on GL (fold loops)
-BENCHMARK(BM_Gl)->ArgsProduct({benchmark::CreateDenseRange(0, 5, 1), {1, 0}})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_Gl)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, 5, 1), {1, 0}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 // The console table, then the per-pixel cost ratios the docs quote, all from
 // this run: 100 / 10 and 1001 / 10 for each backend and scene family, and
