@@ -11,8 +11,8 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArguments& a) {
         ->check(CLI::IsMember({"cpu", "gl", "both"}))
         ->capture_default_str();
     c->add_option("--knobs", a.knobs,
-                  "Knobs to sweep, each NAME or NAME=V1,V2,... (default: all, with values around the scene's): "
-                  "epsilon, epsilon_mode, max_steps, max_distance, shadows, shadow_steps, ao_samples, aa");
+                  "Knobs to sweep, each NAME or NAME=V1,V2,... (default: all, with values around the scene's); a "
+                  "knob is a render setting of docs/scene-format.md, and an unknown name is answered with the list");
     c->add_option("--budget", a.budget, "Stop sweeping after this many seconds and report what was skipped")
         ->check(CLI::Range(0.0, 1e7));
     c->add_option("--report", a.report, "Markdown report to write")->required();

@@ -134,7 +134,7 @@ public:
     // A texture or bump map of the ground's material is mapped as on a plane
     // primitive facing +y at the world's origin: (u, v) run along world x
     // and z, so the texture stays on the floor as the eye moves.
-    int compileGround(const scene::Ground& ground, const dvec3& eye, double footprintPerDistance) {
+    int compileGround(const scene::Ground& ground, const dvec3& eye, double footprintPerDistance, bool alongRay) {
         scene::Node plane = scene::Node::make(scene::NodeKind::Plane);
         plane.set("material", ground.material);
         const bool textured = hasTextureOrBump(plane);
@@ -147,7 +147,7 @@ public:
             patternEye.z = reduceModulo(eye.z, 2.0 * ground.cellSize);
         }
         double pattern = static_cast<double>(ground.pattern);
-        int param = addParams({dvec4(ground.height - eye.y, pattern, footprintPerDistance, 0),
+        int param = addParams({dvec4(ground.height - eye.y, pattern, footprintPerDistance, alongRay ? 1.0 : 0.0),
                                dvec4(patternEye, ground.cellSize), dvec4(ground.secondColor, ground.lineWidth)});
         emit({Opcode::Ground, s, 0, -1, param, materialSlot(ground.material), 0});
         if (textured) {
@@ -574,7 +574,16 @@ int Compiler::compile(const Node& node, int point, dvec3 offset) {
 // parameter buffer (sdf/glsl/parameter_blocks.glsl). Settings only the tracer
 // reads come straight from the scene's; Program::trace mirrors the rest for the
 // host (loop bounds, reports).
-void writeSceneBlocks(Program& program, const scene::RenderSettings& r) {
+// The march takes the ground plane along the ray (tracer.glsl's groundAhead,
+// instGround's step above the plane): the trace settings and the ground's
+// instruction both say so.
+bool groundAlongRay(const scene::Scene& scene) {
+    return scene.environment.ground.enabled && scene.render.groundSteps == scene::GroundSteps::Exact;
+}
+
+void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& eye) {
+    const scene::RenderSettings& r = scene.render;
+    const scene::Ground& ground = scene.environment.ground;
     const TraceParams& t = program.trace;
     shared::TraceSettings settings{.maxSteps = t.maxSteps,
                                    .maxDistance = t.maxDistance,
@@ -591,7 +600,9 @@ void writeSceneBlocks(Program& program, const scene::RenderSettings& r) {
                                    .ambientLight = t.ambientLight,
                                    .background = t.background,
                                    .maxDepth = t.maxDepth,
-                                   .rayWeightCutoff = r.rayWeightCutoff};
+                                   .rayWeightCutoff = r.rayWeightCutoff,
+                                   .groundPlane = groundAlongRay(scene) ? 1 : 0,
+                                   .groundHeight = ground.enabled ? ground.height - eye.y : 0.0};
     for (int i = 0; i < shared::TRACE_SLOTS; ++i) {
         program.params[static_cast<size_t>(shared::TRACE_SLOT + i)] = shared::traceSettingsSlot(settings, i);
     }
@@ -639,7 +650,8 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     int groundStart = -1;
     if (scene.environment.ground.enabled) {
         groundStart = static_cast<int>(compiler.program().code.size());
-        int ground = compiler.compileGround(scene.environment.ground, frame.eye, footprintPerDistance);
+        int ground =
+            compiler.compileGround(scene.environment.ground, frame.eye, footprintPerDistance, groundAlongRay(scene));
         compiler.combine(Opcode::Union, result, ground, -1, 0);
     }
     Program program = std::move(compiler.program());
@@ -688,7 +700,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     for (const scene::Light& light : scene.lights) {
         program.lights.push_back({glm::normalize(light.direction), light.color, light.softness});
     }
-    writeSceneBlocks(program, r);
+    writeSceneBlocks(program, scene, frame.eye);
     return program;
 }
 

@@ -37,6 +37,14 @@ Range unknownRange() { return {{-kInf, kInf}, {-kInf, kInf}}; }
 Range around(double d, double step, double radius) {
     return {{d - radius, d + radius}, {step - radius, step + radius}};
 }
+// Taken along the ray, the ground's step is GROUND_CLEAR_STEP above the plane
+// and its distance at or below it (instGround): non-decreasing in the
+// distance, so its range is the step at the ends of the distance's.
+Range groundRange(double d, double radius, bool alongRay) {
+    Interval distance{d - radius, d + radius};
+    auto step = [&](double h) { return h > 0.0 && alongRay ? sdf::f64::GROUND_CLEAR_STEP : h; };
+    return {distance, {step(distance.lo), step(distance.hi)}};
+}
 Range negated(const Range& r) { return {{-r.d.hi, -r.d.lo}, {-r.step.hi, -r.step.lo}}; }
 
 // A point register over the cell: its value at the centre and how far from it
@@ -213,7 +221,10 @@ Role roleOf(Opcode op) {
 double slackFor(double scale, const Range& a, const Range& b) {
     double magnitude = scale;
     for (double v : {a.d.lo, a.d.hi, b.d.lo, b.d.hi, a.step.lo, a.step.hi, b.step.lo, b.step.hi}) {
-        if (std::isfinite(v)) magnitude = std::max(magnitude, std::abs(v));
+        // the ground's clear step (and an empty group's distance, as large)
+        // mean no surface, not a magnitude the other operand is rounded at:
+        // counted, they made the slack 1e5 and kept the ground in every cell
+        if (std::isfinite(v) && std::abs(v) < sdf::f64::GROUND_CLEAR_STEP) magnitude = std::max(magnitude, std::abs(v));
     }
     return 1e-5 * (1.0 + magnitude);
 }
@@ -385,7 +396,13 @@ CodeSpan CellPruner::prune(const CodeSpan& input, const glm::dvec3& centre, doub
         case Role::Shape: {
             double r = w.points[static_cast<size_t>(in.a)].radius * shapeLipschitz(in.op);
             const auto& s = w.scratch.samples[static_cast<size_t>(in.dst)];
-            w.samples[static_cast<size_t>(in.dst)] = std::isfinite(r) ? around(s.d, s.step, r) : unknownRange();
+            if (!std::isfinite(r)) {
+                w.samples[static_cast<size_t>(in.dst)] = unknownRange();
+            } else if (in.op == Opcode::Ground) {
+                w.samples[static_cast<size_t>(in.dst)] = groundRange(s.d, r, q[0].w > 0.0);
+            } else {
+                w.samples[static_cast<size_t>(in.dst)] = around(s.d, s.step, r);
+            }
             break;
         }
         case Role::Combine: {

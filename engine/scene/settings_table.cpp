@@ -32,6 +32,8 @@ const Setting<RenderSettings> kRender[] = {
     {"lighting", "lighting", "", Choice, choiceMember<&RenderSettings::lighting>(), Any, 0, 0, kLightingModelNames},
     {"step_relaxation", "step relaxation", "", Real, &RenderSettings::stepRelaxation, Closed, 1, 1.9, {},
      {0.01, 1, 1.9, "%.3f", EditorSection::Quality}},
+    {"ground_steps", "ground steps", "", Choice, choiceMember<&RenderSettings::groundSteps>(), Any, 0, 0,
+     kGroundStepsNames},
     {"exposure", "exposure", "", Real, &RenderSettings::exposure, Positive, 0, 0, {}, {0.01, 1e-3, 1e3}},
     {"max_depth", "recursion depth", "", Integer, &RenderSettings::maxDepth, Any, 0, kMaxTraceDepth, {}, {0.05}},
     {"ray_weight_cutoff", "ray weight cutoff", "", Real, &RenderSettings::rayWeightCutoff, Closed, 0, 1, {},

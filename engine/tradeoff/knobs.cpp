@@ -108,6 +108,14 @@ std::vector<Knob> makeKnobs() {
     k.push_back(knob("step_relaxation", always, [](const Scene& s) {
         return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation);
     }));
+    // The ground plane met along the ray (the default) or sphere traced as any
+    // surface: plain sphere tracing, the speed report's baseline (report.cpp).
+    k.push_back(knob(
+        "ground_steps",
+        [](const Scene& s) { return s.environment.ground.enabled ? std::string() : std::string("no ground"); },
+        [](const Scene& s) {
+            return except({0, 1}, static_cast<double>(s.render.groundSteps));
+        }));
     // The ray tree's two limits (sdf/glsl/ray_tree.glsl): bounces, and the
     // weight below which a secondary ray is dropped.
     k.push_back(knob("max_depth", noMirrorsOrGlass, [](const Scene& s) {

@@ -132,7 +132,9 @@ TraceSettings analyticSettings(int maxDepth) {
             .ambientLight = vec3(0),
             .background = vec3(0),
             .maxDepth = maxDepth,
-            .rayWeightCutoff = 1e-3};
+            .rayWeightCutoff = 1e-3,
+            .groundPlane = 0,
+            .groundHeight = 0};
 }
 
 vec3 traceOne(std::function<Sample(vec3)> field, vec3 eye, vec3 direction, int maxDepth = 4) {

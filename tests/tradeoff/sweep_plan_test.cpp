@@ -75,14 +75,16 @@ TEST(SweepPlan, DefaultValuesSurroundTheScenesAndStartWithTheCheapest) {
 
 TEST(SweepPlan, KnobsThatDoNothingForTheSceneAreNotSwept) {
     SweepPlan plan = planSweep(sceneWith(0, scene::ShadowMode::None), parseKnobRequests({}));
-    ASSERT_EQ(plan.notSwept.size(), 4u);
+    ASSERT_EQ(plan.notSwept.size(), 5u);
     EXPECT_EQ(plan.notSwept[0].knob, "shadow_steps");
     EXPECT_EQ(plan.notSwept[0].reason, "shadows off");
     EXPECT_EQ(plan.notSwept[1].knob, "ao_samples");
     EXPECT_EQ(plan.notSwept[1].reason, "AO off");
-    EXPECT_EQ(plan.notSwept[2].knob, "max_depth");
-    EXPECT_EQ(plan.notSwept[2].reason, "no mirrors or glass");
-    EXPECT_EQ(plan.notSwept[3].knob, "ray_weight_cutoff");
+    EXPECT_EQ(plan.notSwept[2].knob, "ground_steps");
+    EXPECT_EQ(plan.notSwept[2].reason, "no ground");
+    EXPECT_EQ(plan.notSwept[3].knob, "max_depth");
+    EXPECT_EQ(plan.notSwept[3].reason, "no mirrors or glass");
+    EXPECT_EQ(plan.notSwept[4].knob, "ray_weight_cutoff");
     for (const Setting& s : plan.settings) {
         ASSERT_NE(s.label.rfind("shadow_steps", 0), 0u) << s.label;
         ASSERT_NE(s.label.rfind("ao_samples", 0), 0u) << s.label;

@@ -65,14 +65,21 @@ SHARED_FN Sample instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1, Material materia
     return shapeSample(max(box, v.x < real(0) ? -bound : bound), material);
 }
 
+// Farther than any surface: the ground's safe step above the plane (below).
+const real GROUND_CLEAR_STEP = real(1e10);
+
 // The ground plane y = height, in march coordinates: q0 = (height - eye.y,
-// pattern, footprint per distance), q1 = (eye, cell size), q2 = (second
+// pattern, footprint per distance, 1 when the march takes it along the ray), q1 = (eye, cell size), q2 = (second
 // colour, line width). March coordinates put the eye at 0, so p is also the
 // primary ray's direction times its distance: a sample's footprint, a disc
 // of diameter w = q0.z |p| across the ray, lands on the plane as an ellipse
 // whose extent along x is w sqrt(1 + (p.x / p.y)^2) (and along z likewise),
 // long towards the horizon. (A reflected ray's footprint is wider than its
 // distance from the eye gives: the ground seen in a mirror is filtered less.)
+// Taken along the ray, its safe step above the plane is GROUND_CLEAR_STEP,
+// which never limits the union it ends: the march takes the plane's step
+// along the ray instead (tracer.glsl's groundAhead) and the other phases its
+// distance (withGroundStep), the scene's other surfaces keeping theirs.
 SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
     real d = p.y - q0.x;
     real height = abs(p.y);
@@ -82,7 +89,7 @@ SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
         footprint = vec2(w * sqrt(p.y * p.y + p.x * p.x) / height, w * sqrt(p.y * p.y + p.z * p.z) / height);
     }
     Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2), footprint);
-    return shapeSample(d, m);
+    return Sample(d, d > real(0) && q0.w > real(0) ? GROUND_CLEAR_STEP : d, m);
 }
 
 // ---- Combine: S[dst] = f(S[a], S[b], slot); the same operator on both channels ----

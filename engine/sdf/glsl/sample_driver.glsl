@@ -19,7 +19,7 @@
 
 SHARED_FN TraceSettings sceneTraceSettings() {
     return traceSettingsFromSlots(P(TRACE_SLOT), P(TRACE_SLOT + 1), P(TRACE_SLOT + 2), P(TRACE_SLOT + 3),
-                                  P(TRACE_SLOT + 4));
+                                  P(TRACE_SLOT + 4), P(TRACE_SLOT + 5));
 }
 
 SHARED_FN Camera sceneCamera() {
@@ -85,7 +85,8 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
                     break;
                 }
                 prepareSample(s);
-                field = fieldSeenBy(s, mapDistance(tracePoint(s, light, settings)));
+                vec3 p = tracePoint(s, light, settings);
+                field = fieldSeenBy(s, withGroundStep(s, p, mapDistance(p), settings));
                 s.evaluations = s.evaluations + 1;
             }
             sampled = false;
@@ -111,7 +112,8 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
         }
         if (materialSampledApart() && !finished && i < limit) {
             prepareSample(s);
-            field = fieldSeenBy(s, mapMaterial(tracePoint(s, sceneLight(lightIndex(s)), settings)));
+            vec3 p = tracePoint(s, sceneLight(lightIndex(s)), settings);
+            field = fieldSeenBy(s, withGroundStep(s, p, mapMaterial(p), settings));
             s.evaluations = s.evaluations + 1;
             sampled = true;
         }

@@ -330,6 +330,39 @@ SHARED_FN bool relaxedStepOvershot(TraceState s, Sample field) {
     return s.marchStep > s.marchRadius && s.marchRadius + abs(field.step) < s.marchStep;
 }
 
+// The ground plane (settings.groundPlane: a ground, and the scene's
+// ground_steps "exact") is the one surface whose distance
+// along a ray is known exactly: a ray above it heading down meets it after
+// h / -dir.y, one heading up never does. Its instruction gives no step above
+// the plane (instGround's GROUND_CLEAR_STEP) and the march steps by the least
+// of the other surfaces' safe step and this: rays over an open floor reach it
+// in a step or two instead of closing in on it geometrically (a ray of slope
+// s shortens its height by the factor 1 - s a step), and rays towards the sky
+// are not held back by the floor below them. Inside a solid the ray marches
+// on the negated field, where the plane is no surface ahead.
+SHARED_FN real groundAhead(TraceState s, TraceSettings settings) {
+    if (settings.groundPlane == 0 || s.inside) {
+        return GROUND_CLEAR_STEP;
+    }
+    vec3 p = s.rayOrigin + s.rayDirection * s.t;
+    real h = p.y - settings.groundHeight;
+    if (!(h > real(0))) {
+        return h;
+    }
+    return s.rayDirection.y < real(0) ? h / -s.rayDirection.y : GROUND_CLEAR_STEP;
+}
+
+// The field's safe step with the ground plane's put back for the phases other
+// than the march, which takes it along the ray (groundAhead): the plane's
+// distance, as for any surface. The driver applies it to every evaluation at
+// p, before a ray inside a solid negates the field.
+SHARED_FN Sample withGroundStep(TraceState s, vec3 p, Sample field, TraceSettings settings) {
+    if (settings.groundPlane == 0 || s.phase == PHASE_MARCH) {
+        return field;
+    }
+    return Sample(field.d, min(field.step, p.y - settings.groundHeight), field.material);
+}
+
 SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
     s.hit = true;
     s.hitPoint = s.rayOrigin + s.rayDirection * s.t;
@@ -365,6 +398,10 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         s.steps = 1;
         return s;
     }
+    // the safe step along the ray, the ground plane's included (groundAhead)
+    real ahead = groundAhead(s, settings);
+    bool planeAhead = ahead < GROUND_CLEAR_STEP;  // the ground plane is met along the ray
+    Sample stepped = planeAhead ? Sample(field.d, min(field.step, ahead), field.material) : field;
     if (atPrimaryRayStart(s) && field.d <= rayEpsilon(s, settings)) {
         // The eye is on a surface or inside a solid (a camera orbiting into
         // the floor, placed on an object): what is behind the eye's own
@@ -372,7 +409,7 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         // colour; with the pixel epsilon, 0 at t = 0, the ray never moved.)
         // Secondary rays start off their surface (ray_tree.glsl) and march on.
         s.phase = PHASE_LEAVE;
-        return leaveStep(s, field, settings);
+        return leaveStep(s, stepped, settings);
     }
     s.steps = s.steps + 1;
     real epsilon = rayEpsilon(s, settings);
@@ -397,16 +434,29 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
         s.marchStep = real(0);
         return s;
     }
-    if (field.d < epsilon || (s.steps >= settings.maxSteps && convergesWithin(s.t, s.lastDistance, field, settings))) {
+    if (field.d < epsilon ||
+        (s.steps >= settings.maxSteps && convergesWithin(s.t, s.lastDistance, stepped, settings))) {
         return beginNormal(s, field, epsilon);
     }
     // the safe step, and at least a fraction of epsilon so the march never stalls
-    real radius = max(field.step, real(0.25) * epsilon);
+    real radius = max(stepped.step, real(0.25) * epsilon);
     real step = s.relaxationOff ? radius : radius * settings.relaxation;
-    if (s.t + step > settings.maxDistance) {
-        step = radius;  // a relaxed step past max distance would end the ray unchecked
+    if (s.t + step > settings.maxDistance || (planeAhead && step >= ahead)) {
+        // a relaxed step past max distance would end the ray unchecked; one
+        // onto the ground plane would land on either side of it at random
+        // and be taken for an overshoot half the time (a plain one lands on it)
+        step = radius;
     }
-    s.t = s.t + step;
+    // the ground plane lies past max distance: one more sample at max distance
+    // (exactly: t + (max - t) can round past it), which hits it when within
+    // epsilon of it, as closing in on it step by step did (a ray ends past
+    // max distance unchecked)
+    bool lastSample =
+        planeAhead && ahead <= field.step && s.t < settings.maxDistance && s.t + step > settings.maxDistance;
+    if (lastSample) {
+        step = settings.maxDistance - s.t;
+    }
+    s.t = lastSample ? settings.maxDistance : s.t + step;
     s.marchRadius = radius;
     s.marchStep = step;
     s.lastDistance = field.d;

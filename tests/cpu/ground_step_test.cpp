@@ -1,0 +1,154 @@
+// With ground_steps "exact" the march takes the ground plane along the ray
+// (tracer.glsl's groundAhead): rays over an open floor land on it in a step
+// or two, exactly, where a plane primitive at the same height, or the ground
+// with ground_steps "sphere", is closed in on geometrically; rays towards the
+// sky are not held back by the floor; the hits are those of the plane
+// primitive, and a floor just past max distance is seen as it was.
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cpu/interpreter.h"
+#include "program/compile_scene.h"
+#include "scene/camera_frame.h"
+#include "scene/scene.h"
+
+namespace sdfwb {
+namespace {
+
+using glm::dvec3;
+namespace f64 = cpu::f64;
+
+constexpr int kWidth = 64, kHeight = 36;
+
+// A unit ball resting on the floor at height 0, seen from above at a slant.
+scene::Scene ballOnTheFloor() {
+    scene::Scene s;
+    scene::Node translate = scene::Node::make(scene::NodeKind::Translate);
+    translate.set("offset", dvec3(0, 1, 0));
+    translate.children.push_back(scene::Node::make(scene::NodeKind::Sphere));
+    s.root.children.push_back(translate);
+    s.environment.ground.enabled = true;
+    s.environment.ground.pattern = scene::GroundPattern::Plain;
+    s.environment.ground.height = 0.0;
+    s.camera.target = dvec3(0, 0.5, 0);
+    s.camera.elevation = 15.0;
+    s.camera.distance = 8.0;
+    s.render.maxDistance = 60.0;
+    return s;
+}
+
+// The same floor as a plane primitive, which the march treats like any surface.
+scene::Scene withPlanePrimitive(scene::Scene s) {
+    s.environment.ground.enabled = false;
+    s.root.children.push_back(scene::Node::make(scene::NodeKind::Plane));
+    return s;
+}
+
+struct Traced {
+    explicit Traced(const scene::Scene& s)
+        : program(program::compileScene(s, {kWidth, kHeight, 1})), kernel(program), scratch(program) {}
+    f64::SampleResult at(int x, int y) { return kernel.trace(scratch, x + 0.5, y + 0.5); }
+    f64::Ray ray(int x, int y) const { return kernel.ray(x + 0.5, y + 0.5); }
+
+    program::Program program;
+    f64::Kernel kernel;
+    f64::Scratch scratch;
+};
+
+TEST(GroundStep, FloorRaysLandOnThePlaneInAFractionOfTheSteps) {
+    for (double relaxation : {1.0, 1.6}) {
+        scene::Scene s = ballOnTheFloor();
+        s.render.stepRelaxation = relaxation;
+        scene::Scene sphereTraced = s;
+        sphereTraced.render.groundSteps = scene::GroundSteps::Sphere;
+        Traced ground(s), plane(withPlanePrimitive(s)), sphere(sphereTraced);
+        long groundSteps = 0, planeSteps = 0, sphereSteps = 0, floorPixels = 0, disagreements = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                f64::SampleResult g = ground.at(x, y), q = plane.at(x, y);
+                disagreements += g.hit != q.hit;
+                f64::Ray ray = ground.ray(x, y);
+                dvec3 hit = dvec3(ray.origin + ray.direction * g.t) + scene::cameraFrame(s.camera).eye;
+                bool onTheFloor = g.hit && q.hit && std::abs(hit.y) < 1e-6 * g.t;
+                if (!onTheFloor) continue;
+                ++floorPixels;
+                groundSteps += g.steps;
+                planeSteps += q.steps;
+                sphereSteps += sphere.at(x, y).steps;
+                // the plane primitive stops within epsilon of the floor
+                const program::TraceParams& trace = ground.program.trace;
+                double slack = std::max(trace.epsilon, trace.epsilonPerDistance * g.t) / -ray.direction.y;
+                EXPECT_NEAR(q.t, g.t, 2.0 * slack) << x << ", " << y;
+            }
+        }
+        EXPECT_GT(floorPixels, kWidth * kHeight / 3) << relaxation;
+        EXPECT_LE(disagreements, kWidth * kHeight / 200) << relaxation;  // silhouettes, stepped otherwise
+        EXPECT_LE(4 * groundSteps, planeSteps) << relaxation << ": " << groundSteps << " against " << planeSteps;
+        // ground_steps "sphere" steps towards the floor as towards any surface
+        EXPECT_LE(4 * groundSteps, sphereSteps) << relaxation << ": " << groundSteps << " against " << sphereSteps;
+    }
+}
+
+TEST(GroundStep, RaysTowardsTheSkyAreNotHeldBackByTheFloor) {
+    scene::Scene s = ballOnTheFloor();
+    s.camera.target = dvec3(0, 2.5, 0);
+    s.camera.elevation = -10.0;  // from below the ball's top, looking up past it
+    s.camera.distance = 4.0;
+    scene::Scene noGround = s;
+    noGround.environment.ground.enabled = false;
+    Traced ground(s), bare(noGround);
+    int upwards = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            if (!(ground.ray(x, y).direction.y > 0.0)) continue;
+            ++upwards;
+            f64::SampleResult g = ground.at(x, y), b = bare.at(x, y);
+            EXPECT_EQ(g.hit, b.hit) << x << ", " << y;
+            EXPECT_EQ(g.steps, b.steps) << x << ", " << y;
+            EXPECT_EQ(g.t, b.t) << x << ", " << y;
+        }
+    }
+    EXPECT_GT(upwards, kWidth * kHeight / 2);
+}
+
+// A floor just past max distance was closed in on step by step until within
+// epsilon of it: a hit when that happened before max distance, as it still
+// does with ground_steps "sphere". One more sample at max distance keeps
+// that, where a step onto the plane would end the ray past max distance
+// unchecked; the sample lands on max distance exactly, also after steps
+// that other surfaces limited (a ball beside the ray).
+TEST(GroundStep, AFloorJustPastMaxDistanceIsSeenAsBefore) {
+    for (bool ball : {false, true}) {
+        scene::Scene s = ballOnTheFloor();
+        s.root.children[0].set("offset", dvec3(-1.6, 1, 0));
+        if (!ball) s.root.children.clear();
+        s.render.epsilonMode = scene::EpsilonMode::Absolute;
+        s.render.epsilon = 0.01;
+        s.render.maxDistance = 37.3;
+        const int x = kWidth / 2, y = kHeight / 4;  // below the centre: a ray heading down
+        f64::Ray ray = Traced(s).ray(x, y);
+        ASSERT_LT(ray.direction.y, 0.0);
+        dvec3 eye = scene::cameraFrame(s.camera).eye;
+        // the floor's height where the ray meets it at distance t
+        auto floorMetAt = [&](double t) { return eye.y + ray.direction.y * t; };
+        double slack = s.render.epsilon / -ray.direction.y;  // distance along the ray per epsilon of height
+        for (auto [past, seen] : {std::pair{0.5, true}, std::pair{2.0, false}}) {
+            s.environment.ground.height = floorMetAt(s.render.maxDistance + past * slack);
+            scene::Scene sphereTraced = s;
+            sphereTraced.render.groundSteps = scene::GroundSteps::Sphere;
+            f64::SampleResult exact = Traced(s).at(x, y), sphere = Traced(sphereTraced).at(x, y);
+            EXPECT_EQ(exact.hit, seen) << past << " epsilon past max distance, ball " << ball;
+            EXPECT_EQ(sphere.hit, seen) << past << " epsilon past max distance, ball " << ball;
+            if (seen) {
+                EXPECT_EQ(exact.t, s.render.maxDistance) << "ball " << ball;
+                EXPECT_GT(exact.steps, ball ? 2 : 1) << "ball " << ball;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace sdfwb
