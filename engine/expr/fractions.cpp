@@ -1,6 +1,7 @@
 #include "expr/fractions.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "algebra/division.h"
 
@@ -81,15 +82,44 @@ Fraction FractionArithmetic::multiply(const Fraction& a, const Fraction& b) cons
   return {product(a.numerator, b.numerator), powers};
 }
 
+// By f, f^2, f^4, ... while they divide, then back down the same powers,
+// each at most once: about 2 log2 k divisions. Dividing by f one power at a
+// time cost a division per power, each as dear as p's degree (parsing
+// x^-2 + x^-60000 took 19 s, past any --timeout, before saying it is no
+// polynomial).
+std::pair<Polynomial, unsigned> FractionArithmetic::divideOut(Polynomial p, const Polynomial& f,
+                                                              unsigned limit) const {
+  std::vector<Polynomial> ladder;  // f^(2^j), each divided out once on the way up
+  unsigned count = 0;
+  for (Polynomial power = f; ladder.size() < 32;) {
+    const unsigned step = 1u << ladder.size();
+    if (step > limit - count) break;
+    auto q = algebra::divideExact(p, power);
+    if (!q) break;
+    p = std::move(*q);
+    count += step;
+    ladder.push_back(power);
+    if (2 * power.totalDegree() > p.totalDegree()) break;  // its square cannot divide what is left
+    power = product(power, power);
+  }
+  // what is left of the multiplicity is below the last step: one bit each
+  for (std::size_t j = ladder.size(); j-- > 0;) {
+    const unsigned step = 1u << j;
+    if (step > limit - count) continue;
+    if (auto q = algebra::divideExact(p, ladder[j])) {
+      p = std::move(*q);
+      count += step;
+    }
+  }
+  return {std::move(p), count};
+}
+
 std::pair<Rational, std::vector<unsigned>> FractionArithmetic::factorize(Polynomial p) {
   std::vector<unsigned> powers(factors_.size(), 0);
   for (std::size_t i = 0; i < factors_.size() && !p.isConstant(); ++i) {
-    while (!p.isConstant()) {
-      auto q = algebra::divideExact(p, factors_[i]);
-      if (!q) break;
-      p = std::move(*q);
-      ++powers[i];
-    }
+    auto [rest, k] = divideOut(std::move(p), factors_[i], std::numeric_limits<unsigned>::max());
+    p = std::move(rest);
+    powers[i] = k;
   }
   if (p.isConstant()) return {p.leadingCoefficient(), powers};
   Polynomial factor = p.primitive();
@@ -114,12 +144,9 @@ std::optional<Fraction> FractionArithmetic::divide(const Fraction& a, const Frac
 Fraction FractionArithmetic::cancel(Fraction a) const {
   if (a.numerator.isZero()) return {a.numerator, {}};
   for (std::size_t i = 0; i < a.powers.size(); ++i) {
-    while (a.powers[i] > 0) {
-      auto q = algebra::divideExact(a.numerator, factors_[i]);
-      if (!q) break;
-      a.numerator = std::move(*q);
-      --a.powers[i];
-    }
+    auto [rest, k] = divideOut(std::move(a.numerator), factors_[i], a.powers[i]);
+    a.numerator = std::move(rest);
+    a.powers[i] -= k;
   }
   return a;
 }

@@ -77,6 +77,9 @@ class FractionArithmetic {
   algebra::Polynomial product(const algebra::Polynomial& a, const algebra::Polynomial& b) const;
   // Multiplies n by prod(factor_i ^ powers_i).
   algebra::Polynomial withFactors(algebra::Polynomial n, const std::vector<unsigned>& powers) const;
+  // {p / f^k, k} for the largest k <= limit with f^k dividing p.
+  std::pair<algebra::Polynomial, unsigned> divideOut(algebra::Polynomial p, const algebra::Polynomial& f,
+                                                     unsigned limit) const;
   // Splits p (nonzero) into a rational constant times a product of factors,
   // reusing known factors that divide it and adding the rest as a new one.
   std::pair<algebra::Rational, std::vector<unsigned>> factorize(algebra::Polynomial p);
