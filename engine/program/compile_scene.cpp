@@ -107,6 +107,10 @@ ShapeCode repeatCode(const Node& n) {
 }
 ShapeCode repeatInfiniteCode(const Node& n) { return {Opcode::RepeatInfinite, {dvec4(n.vec3("period"), 0)}}; }
 
+// The ground's height in march coordinates (the eye at 0): the ground's
+// instruction and the trace settings both carry it.
+double groundHeightFromEye(const scene::Ground& ground, const dvec3& eye) { return ground.height - eye.y; }
+
 class Compiler {
 public:
     explicit Compiler(const scene::Scene& scene) : scene_(scene), visibility_(scene.root) {
@@ -147,7 +151,7 @@ public:
             patternEye.z = reduceModulo(eye.z, 2.0 * ground.cellSize);
         }
         double pattern = static_cast<double>(ground.pattern);
-        int param = addParams({dvec4(ground.height - eye.y, pattern, footprintPerDistance, alongRay ? 1.0 : 0.0),
+        int param = addParams({dvec4(groundHeightFromEye(ground, eye), pattern, footprintPerDistance, alongRay ? 1.0 : 0.0),
                                dvec4(patternEye, ground.cellSize), dvec4(ground.secondColor, ground.lineWidth)});
         emit({Opcode::Ground, s, 0, -1, param, materialSlot(ground.material), 0});
         if (textured) {
@@ -602,7 +606,7 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
                                    .maxDepth = t.maxDepth,
                                    .rayWeightCutoff = r.rayWeightCutoff,
                                    .groundPlane = groundAlongRay(scene) ? 1 : 0,
-                                   .groundHeight = ground.enabled ? ground.height - eye.y : 0.0};
+                                   .groundHeight = ground.enabled ? groundHeightFromEye(ground, eye) : 0.0};
     for (int i = 0; i < shared::TRACE_SLOTS; ++i) {
         program.params[static_cast<size_t>(shared::TRACE_SLOT + i)] = shared::traceSettingsSlot(settings, i);
     }

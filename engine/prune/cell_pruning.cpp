@@ -37,13 +37,12 @@ Range unknownRange() { return {{-kInf, kInf}, {-kInf, kInf}}; }
 Range around(double d, double step, double radius) {
     return {{d - radius, d + radius}, {step - radius, step + radius}};
 }
-// Taken along the ray, the ground's step is GROUND_CLEAR_STEP above the plane
-// and its distance at or below it (instGround): non-decreasing in the
-// distance, so its range is the step at the ends of the distance's.
+// The ground's safe step (groundSafeStep, instGround's) is non-decreasing in
+// its distance, so its range is the step at the ends of the distance's.
 Range groundRange(double d, double radius, bool alongRay) {
     Interval distance{d - radius, d + radius};
-    auto step = [&](double h) { return h > 0.0 && alongRay ? sdf::f64::GROUND_CLEAR_STEP : h; };
-    return {distance, {step(distance.lo), step(distance.hi)}};
+    return {distance,
+            {sdf::f64::groundSafeStep(distance.lo, alongRay), sdf::f64::groundSafeStep(distance.hi, alongRay)}};
 }
 Range negated(const Range& r) { return {{-r.d.hi, -r.d.lo}, {-r.step.hi, -r.step.lo}}; }
 

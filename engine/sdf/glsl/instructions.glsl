@@ -68,9 +68,19 @@ SHARED_FN Sample instImplicit(vec3 p, vec4 v, vec4 q0, vec4 q1, Material materia
 // Farther than any surface: the ground's safe step above the plane (below).
 const real GROUND_CLEAR_STEP = real(1e10);
 
+// The ground plane's distance at march point p, its height in march
+// coordinates given: the instruction's, the march's along the ray
+// (tracer.glsl) and the other phases' step all read it here.
+SHARED_FN real heightAboveGround(vec3 p, real groundHeight) { return p.y - groundHeight; }
+
+// The ground's safe step at distance d: taken along the ray, none above the
+// plane (the march takes it, tracer.glsl's groundAhead); the prune grid
+// bounds it with this too.
+SHARED_FN real groundSafeStep(real d, bool alongRay) { return d > real(0) && alongRay ? GROUND_CLEAR_STEP : d; }
+
 // The ground plane y = height, in march coordinates: q0 = (height - eye.y,
-// pattern, footprint per distance, 1 when the march takes it along the ray), q1 = (eye, cell size), q2 = (second
-// colour, line width). March coordinates put the eye at 0, so p is also the
+// pattern, footprint per distance, 1 when the march takes it along the ray),
+// q1 = (eye, cell size), q2 = (second colour, line width). March coordinates put the eye at 0, so p is also the
 // primary ray's direction times its distance: a sample's footprint, a disc
 // of diameter w = q0.z |p| across the ray, lands on the plane as an ellipse
 // whose extent along x is w sqrt(1 + (p.x / p.y)^2) (and along z likewise),
@@ -81,7 +91,7 @@ const real GROUND_CLEAR_STEP = real(1e10);
 // along the ray instead (tracer.glsl's groundAhead) and the other phases its
 // distance (withGroundStep), the scene's other surfaces keeping theirs.
 SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
-    real d = p.y - q0.x;
+    real d = heightAboveGround(p, q0.x);
     real height = abs(p.y);
     real w = q0.z * length3(p);
     vec2 footprint = vec2(PATTERN_MAX_FOOTPRINT * q1.w);
@@ -89,7 +99,7 @@ SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
         footprint = vec2(w * sqrt(p.y * p.y + p.x * p.x) / height, w * sqrt(p.y * p.y + p.z * p.z) / height);
     }
     Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2), footprint);
-    return Sample(d, d > real(0) && q0.w > real(0) ? GROUND_CLEAR_STEP : d, m);
+    return Sample(d, groundSafeStep(d, q0.w > real(0)), m);
 }
 
 // ---- Combine: S[dst] = f(S[a], S[b], slot); the same operator on both channels ----

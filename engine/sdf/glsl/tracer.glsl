@@ -344,8 +344,7 @@ SHARED_FN real groundAhead(TraceState s, TraceSettings settings) {
     if (settings.groundPlane == 0 || s.inside) {
         return GROUND_CLEAR_STEP;
     }
-    vec3 p = s.rayOrigin + s.rayDirection * s.t;
-    real h = p.y - settings.groundHeight;
+    real h = heightAboveGround(s.rayOrigin + s.rayDirection * s.t, settings.groundHeight);
     if (!(h > real(0))) {
         return h;
     }
@@ -360,7 +359,7 @@ SHARED_FN Sample withGroundStep(TraceState s, vec3 p, Sample field, TraceSetting
     if (settings.groundPlane == 0 || s.phase == PHASE_MARCH) {
         return field;
     }
-    return Sample(field.d, min(field.step, p.y - settings.groundHeight), field.material);
+    return Sample(field.d, min(field.step, heightAboveGround(p, settings.groundHeight)), field.material);
 }
 
 SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
