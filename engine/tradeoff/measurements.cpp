@@ -1,13 +1,13 @@
 #include "tradeoff/measurements.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.h"
 #include "scene/scene_json.h"
+#include "tradeoff/cache_key.h"
 
 namespace sdfwb::tradeoff {
 namespace {
@@ -48,7 +48,7 @@ std::filesystem::path defaultCacheDirectory() {
     return base / "sdf-workbench" / "references";
 }
 
-std::string measurementKey(const scene::Scene& scene) {
+std::string measurementKey(const scene::Scene& scene, std::string_view shadingCode) {
     scene::Scene keyed = scene;
     keyed.name.clear();
     keyed.description.clear();
@@ -59,15 +59,7 @@ std::string measurementKey(const scene::Scene& scene) {
     look.aoSamples = scene.render.aoSamples > 0 ? 1 : 0;
     look.aoDistance = scene.render.aoDistance;
     keyed.render = look;
-    std::string text = scene::serializeScene(keyed);
-    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a
-    for (unsigned char c : text) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-    return hex;
+    return cacheKey(keyed, shadingCode);
 }
 
 void storeMeasurements(const std::filesystem::path& cacheDir, const std::string& key, const SceneMeasurements& m) {

@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/scene.h"
+#include "sdf/glsl_sources.h"
 
 namespace sdfwb::tradeoff {
 
@@ -31,8 +33,11 @@ std::filesystem::path defaultCacheDirectory();
 // Hex key of a scene's content and look (shadow technique, lighting, whether
 // AO is on, AO distance), without its quality settings, name and description:
 // edits of quality settings keep finding the measurements, and scenes that
-// differ only in quality settings share them.
-std::string measurementKey(const scene::Scene& scene);
+// differ only in quality settings share them. The shared shading code
+// (`shadingCode`, sdf::sharedShadingCode() unless a test gives another) and
+// the renderer's version are in it too: measurements taken by an older
+// renderer, against its references, are not shown for a newer one.
+std::string measurementKey(const scene::Scene& scene, std::string_view shadingCode = sdf::sharedShadingCode());
 
 // Adds `m`'s points to those stored under `key` (a point of equal settings,
 // size aside, is replaced; the first point stays first). Writes atomically;

@@ -12,15 +12,11 @@
 #include "parity/reference_scene.h"
 #include "program/compile_scene.h"
 #include "scene/scene_json.h"
+#include "tradeoff/cache_key.h"
 
 namespace sdfwb::tradeoff {
 namespace {
 
-// The key holds the shared shading code itself (every sdf/glsl/ text), so a
-// change to it renders the references again; bump this for a change to the
-// output made in C++ only (cpu/interpreter.inl, program/, expr/, the
-// reference's settings).
-constexpr std::string_view kReferenceVersion = "sdfwb-reference-2";
 constexpr char kMagic[8] = {'S', 'D', 'F', 'W', 'R', 'E', 'F', '2'};
 
 std::filesystem::path cacheFile(const std::filesystem::path& dir, const std::string& key) {
@@ -53,16 +49,7 @@ std::string referenceKey(const scene::Scene& referenceScene, std::string_view sh
     scene::Scene keyed = referenceScene;
     keyed.name.clear();
     keyed.description.clear();
-    std::string text =
-        std::string(kReferenceVersion) + "\n" + std::string(shadingCode) + "\n" + scene::serializeScene(keyed);
-    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a
-    for (unsigned char c : text) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-    return hex;
+    return cacheKey(keyed, shadingCode);
 }
 
 std::optional<image::Frame> loadReference(const std::filesystem::path& cacheDir, const std::string& key, int width,

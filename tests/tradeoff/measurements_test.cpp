@@ -38,6 +38,15 @@ TEST(MeasurementKey, IgnoresRenderSettingsAndNamesButNotContent) {
     EXPECT_EQ(measurementKey(moreSamples), measurementKey(occluded));
 }
 
+// Measurements are errors against a reference and times of a renderer: a
+// renderer whose shading code changed measures again rather than showing the
+// old figures in the workbench.
+TEST(MeasurementKey, ChangesWithTheShadingCode) {
+    scene::Scene s;
+    EXPECT_EQ(measurementKey(s), measurementKey(s, sdf::sharedShadingCode()));
+    EXPECT_NE(measurementKey(s, "the shading code changed"), measurementKey(s));
+}
+
 SceneMeasurements twoPoints() {
     scene::RenderSettings fine, coarse;
     fine.width = coarse.width = 160;
