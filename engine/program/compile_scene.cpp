@@ -606,7 +606,18 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
                                    .maxDepth = t.maxDepth,
                                    .rayWeightCutoff = r.rayWeightCutoff,
                                    .groundPlane = groundAlongRay(scene) ? 1 : 0,
-                                   .groundHeight = ground.enabled ? groundHeightFromEye(ground, eye) : 0.0};
+                                   .groundHeight = ground.enabled ? groundHeightFromEye(ground, eye) : 0.0,
+                                   .groundPresent = ground.enabled ? 1 : 0,
+                                   .boundsPresent = program.rootBounded ? 1 : 0,
+                                   .boundsCenter = dvec3(0.0),
+                                   .boundsRadius = 0.0};
+    if (program.rootBounded) {
+        // the root's box (march coordinates) in a sphere, widened by far more
+        // than the rounding of its centre and radius to float
+        settings.boundsCenter = 0.5 * (program.rootMin + program.rootMax);
+        double radius = 0.5 * glm::length(program.rootMax - program.rootMin);
+        settings.boundsRadius = radius + 1e-5 * (radius + glm::length(settings.boundsCenter));
+    }
     for (int i = 0; i < shared::TRACE_SLOTS; ++i) {
         program.params[static_cast<size_t>(shared::TRACE_SLOT + i)] = shared::traceSettingsSlot(settings, i);
     }

@@ -42,8 +42,10 @@ void expectPackUndoesUnpack(const char* block, int slots, Unpack unpack, Pack pa
 TEST(ParameterBlocks, EachPackerUndoesItsUnpacker) {
     expectPackUndoesUnpack(
         "TraceSettings", shared::TRACE_SLOTS,
-        [](const std::vector<dvec4>& q) { return shared::traceSettingsFromSlots(q[0], q[1], q[2], q[3], q[4], q[5]); },
-        [](const shared::TraceSettings& s, int i) { return shared::traceSettingsSlot(s, i); }, {22, 23});
+        [](const std::vector<dvec4>& q) {
+            return shared::traceSettingsFromSlots(q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
+        },
+        [](const shared::TraceSettings& s, int i) { return shared::traceSettingsSlot(s, i); });
     expectPackUndoesUnpack(
         "Camera", shared::CAMERA_SLOTS,
         [](const std::vector<dvec4>& q) { return shared::cameraFromSlots(q[0], q[1], q[2], q[3]); },

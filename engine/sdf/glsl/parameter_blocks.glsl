@@ -39,28 +39,33 @@ struct TraceSettings {
     int maxDepth;            // bounces of the ray tree (ray_tree.glsl)
     real rayWeightCutoff;    // secondary rays lighter than this in every channel are dropped
     int groundPlane;         // 1 when the march takes the ground plane along the ray (tracer.glsl's groundAhead)
-    real groundHeight;       // its height in march coordinates (the eye's subtracted)
+    real groundHeight;       // the ground's height in march coordinates (the eye's subtracted)
+    int groundPresent;       // 1 when the scene has a ground plane
+    int boundsPresent;       // 1 when every surface but the ground lies in the sphere below
+    vec3 boundsCenter;       // march coordinates (tracer.glsl's shadowRayClear)
+    real boundsRadius;
 };
 
 const int MAX_LIGHTS = 8;
 const int TRACE_SLOT = 0;
-const int TRACE_SLOTS = 6;
-const int CAMERA_SLOT = 6;      // TRACE_SLOT + TRACE_SLOTS
+const int TRACE_SLOTS = 7;
+const int CAMERA_SLOT = 7;      // TRACE_SLOT + TRACE_SLOTS
 const int CAMERA_SLOTS = 4;
-const int LIGHT_SLOT = 10;      // CAMERA_SLOT + CAMERA_SLOTS
+const int LIGHT_SLOT = 11;      // CAMERA_SLOT + CAMERA_SLOTS
 const int LIGHT_SLOTS = 2;      // per light; unused lights are zero
-const int ENVIRONMENT_SLOT = 26;  // LIGHT_SLOT + MAX_LIGHTS * LIGHT_SLOTS
+const int ENVIRONMENT_SLOT = 27;  // LIGHT_SLOT + MAX_LIGHTS * LIGHT_SLOTS
 const int ENVIRONMENT_SLOTS = 1;
-const int MATERIAL_SLOT = 27;   // ENVIRONMENT_SLOT + ENVIRONMENT_SLOTS: the default material
+const int MATERIAL_SLOT = 28;   // ENVIRONMENT_SLOT + ENVIRONMENT_SLOTS: the default material
 const int MATERIAL_SLOTS = 6;
 
 // ---- TraceSettings: (maxSteps, maxDistance, epsilon, epsilonPerDistance),
 // (shadowMode, shadowSteps, aoSamples, aoDistance), (lightingModel, relaxation,
 // lightCount, exposure), (ambientLight, maxDepth), (background, rayWeightCutoff),
-// (groundPlane, groundHeight, unused, unused) ----
-SHARED_FN TraceSettings traceSettingsFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4, vec4 q5) {
+// (groundPlane, groundHeight, groundPresent, boundsPresent), (boundsCenter, boundsRadius) ----
+SHARED_FN TraceSettings traceSettingsFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4, vec4 q5, vec4 q6) {
     return TraceSettings(int(q0.x), q0.y, q0.z, q0.w, int(q1.x), int(q1.y), int(q1.z), q1.w, int(q2.x), q2.y,
-                         int(q2.z), q2.w, xyz(q3), xyz(q4), int(q3.w), q4.w, int(q5.x), q5.y);
+                         int(q2.z), q2.w, xyz(q3), xyz(q4), int(q3.w), q4.w, int(q5.x), q5.y, int(q5.z), int(q5.w),
+                         xyz(q6), q6.w);
 }
 SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
     if (i == 0) {
@@ -78,7 +83,10 @@ SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
     if (i == 4) {
         return vec4(s.background, s.rayWeightCutoff);
     }
-    return vec4(real(s.groundPlane), s.groundHeight, real(0), real(0));
+    if (i == 5) {
+        return vec4(real(s.groundPlane), s.groundHeight, real(s.groundPresent), real(s.boundsPresent));
+    }
+    return vec4(s.boundsCenter, s.boundsRadius);
 }
 
 // ---- Camera: (origin, tanHalfFov), (forward, 0), (right, 0), (up, 0) ----

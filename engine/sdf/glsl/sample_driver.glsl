@@ -19,7 +19,7 @@
 
 SHARED_FN TraceSettings sceneTraceSettings() {
     return traceSettingsFromSlots(P(TRACE_SLOT), P(TRACE_SLOT + 1), P(TRACE_SLOT + 2), P(TRACE_SLOT + 3),
-                                  P(TRACE_SLOT + 4), P(TRACE_SLOT + 5));
+                                  P(TRACE_SLOT + 4), P(TRACE_SLOT + 5), P(TRACE_SLOT + 6));
 }
 
 SHARED_FN Camera sceneCamera() {
@@ -80,6 +80,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     while (!finished && i < limit) {
         for (; i < limit; ++i) {
             Light light = sceneLight(lightIndex(s));
+            s = skipClearShadowRay(s, light, settings);
             if (traceNeedsSample(s) && !sampled) {
                 if (materialSampledApart() && traceMaterialReads(s) == MATERIAL_READS_SHADING) {
                     break;

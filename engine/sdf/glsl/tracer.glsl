@@ -9,7 +9,7 @@ const int PHASE_MARCH = 0;
 const int PHASE_NORMAL = 1;
 const int PHASE_AO = 2;
 const int PHASE_SHADOW = 3;
-const int PHASE_LIGHT = 4;
+const int PHASE_LIGHT = 4;  // the light's shadow is decided: none taken, or a shadow ray no sample can change
 const int PHASE_DONE = 5;
 const int PHASE_LEAVE = 6;  // a primary ray that starts on a surface or inside a solid steps out of it
 const int PHASE_ENTER = 7;  // a primary ray confirms a hit on a thin feature by entering it
@@ -666,6 +666,67 @@ SHARED_FN real occluderOpenness(Material m) {
 // distance) gets as many steps' worth of progress as an exact one, up to
 // SHADOW_SAMPLE_CAP samples: out of 96 samples there, its shadow rays were
 // called blocked and its shadow came out too dark and too large.
+// What a shadow ray ended with lets through: the improved variant's
+// remapped result (tinted by the transparent occluders it met), the others'
+// result; 1 for a ray not taken (no shadows).
+SHARED_FN vec3 shadowOutcome(TraceState s, TraceSettings settings) {
+    if (settings.shadowMode == SHADOW_IMPROVED) {
+        return s.shadowThrough * smoothstepr(real(-1), real(1), max(s.shadowResult, real(-1)));
+    }
+    return vec3(saturate(s.shadowResult));
+}
+
+// Whether a shadow ray's remaining samples can no longer change its outcome,
+// so that it ends before taking them. Every surface but the ground lies in
+// the sphere settings.boundsCenter, boundsRadius (when boundsPresent), so
+// the points p + u dir of the ray from its next sample p = o + T dir on are at
+// least |p + u dir - c| - R from them and (p + u dir).y - groundHeight from
+// the ground. A sample lowers the result only where its distance reads below
+// m (T + u), m = max(result, 0) / k (0 for hard shadows, which have no
+// penumbra), and blocks or tints the light only within epsilon: when both
+// distances stay above m (T + u) + epsilon for every u >= 0 (up to max
+// distance for the ground, which is linear along the ray; for the sphere,
+// squaring gives (1 - m^2) u^2 + 2 b u + c >= 0 with b and c below), none
+// can. (A field that bounds distances loosely could read lower there; the
+// distances themselves would not.) Shadow rays from an open floor towards a
+// light above the scene take no sample at all, and rays that have passed
+// their occluders stop sampling the empty space after them.
+SHARED_FN bool shadowRayClear(TraceState s, Light light, TraceSettings settings) {
+    if (s.phase != PHASE_SHADOW || settings.boundsPresent == 0) {
+        return false;
+    }
+    real slope = settings.shadowMode == SHADOW_HARD ? real(0) : max(s.shadowResult, real(0)) / light.softness;
+    if (!(slope < real(1))) {
+        return false;
+    }
+    vec3 p = shadowOrigin(s) + light.direction * s.shadowT;
+    real margin = s.hitEpsilon + slope * s.shadowT;
+    if (settings.groundPresent != 0) {
+        real above = heightAboveGround(p, settings.groundHeight) - margin;
+        real reach = max(settings.maxDistance - s.shadowT, real(0));
+        if (!(above >= real(0)) || !(above + reach * (light.direction.y - slope) >= real(0))) {
+            return false;
+        }
+    }
+    vec3 v = p - settings.boundsCenter;
+    real r = settings.boundsRadius + margin;
+    real c = dot3(v, v) - r * r;
+    if (!(c >= real(0))) {
+        return false;
+    }
+    real b = dot3(v, light.direction) - r * slope;
+    return b >= real(0) || b * b <= (real(1) - slope * slope) * c;
+}
+
+// The driver asks before each evaluation: a shadow ray that no sample can
+// change finishes its light (PHASE_LIGHT, with what the ray found so far).
+SHARED_FN TraceState skipClearShadowRay(TraceState s, Light light, TraceSettings settings) {
+    if (shadowRayClear(s, light, settings)) {
+        s.phase = PHASE_LIGHT;
+    }
+    return s;
+}
+
 SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, TraceSettings settings) {
     s.counter = s.counter + 1;
     real d = field.d;
@@ -688,8 +749,7 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
         }
         s.shadowT = s.shadowT + max(abs(field.step), s.hitEpsilon);
         if (s.shadowResult < real(-1) || s.shadowT > settings.maxDistance || exhausted) {
-            real clamped = max(s.shadowResult, real(-1));
-            return finishLight(s, light, settings, s.shadowThrough * smoothstepr(real(-1), real(1), clamped));
+            return finishLight(s, light, settings, shadowOutcome(s, settings));
         }
         return s;
     }
@@ -710,7 +770,7 @@ SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, Trac
     s.shadowT = s.shadowT + s.shadowLastStep;
     s.lastDistance = d;
     if (s.shadowT > settings.maxDistance || exhausted) {
-        return finishLight(s, light, settings, vec3(saturate(s.shadowResult)));
+        return finishLight(s, light, settings, shadowOutcome(s, settings));
     }
     return s;
 }
@@ -738,7 +798,7 @@ SHARED_FN TraceState traceAdvance(TraceState s, Sample field, Light light, Trace
         return advanceShadow(s, field, light, settings);
     }
     if (s.phase == PHASE_LIGHT) {
-        return finishLight(s, light, settings, vec3(real(1)));
+        return finishLight(s, light, settings, shadowOutcome(s, settings));
     }
     return s;
 }
