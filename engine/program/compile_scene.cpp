@@ -582,13 +582,15 @@ int Compiler::compile(const Node& node, int point, dvec3 offset) {
 // instGround's step above the plane): the trace settings and the ground's
 // instruction both say so.
 bool groundAlongRay(const scene::Scene& scene) {
-    return scene.environment.ground.enabled && scene.render.groundSteps == scene::GroundSteps::Exact;
+    return scene.environment.ground.enabled && scene.render.tracing == scene::Tracing::Bounded;
 }
 
 void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& eye) {
     const scene::RenderSettings& r = scene.render;
     const scene::Ground& ground = scene.environment.ground;
     const TraceParams& t = program.trace;
+    // shadow rays end by the scene's bounds (tracer.glsl's shadowRayClear)
+    bool bounded = program.rootBounded && r.tracing == scene::Tracing::Bounded;
     shared::TraceSettings settings{.maxSteps = t.maxSteps,
                                    .maxDistance = t.maxDistance,
                                    .epsilon = t.epsilon,
@@ -608,10 +610,10 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
                                    .groundPlane = groundAlongRay(scene) ? 1 : 0,
                                    .groundHeight = ground.enabled ? groundHeightFromEye(ground, eye) : 0.0,
                                    .groundPresent = ground.enabled ? 1 : 0,
-                                   .boundsPresent = program.rootBounded ? 1 : 0,
+                                   .boundsPresent = bounded ? 1 : 0,
                                    .boundsCenter = dvec3(0.0),
                                    .boundsRadius = 0.0};
-    if (program.rootBounded) {
+    if (bounded) {
         // the root's box (march coordinates) in a sphere, widened by far more
         // than the rounding of its centre and radius to float
         settings.boundsCenter = 0.5 * (program.rootMin + program.rootMax);

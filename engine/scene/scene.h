@@ -131,11 +131,13 @@ enum class EpsilonMode { Absolute, Pixel };
 inline constexpr const char* kEpsilonModeNames[] = {"absolute", "pixel"};
 enum class GroundPattern { Plain, Checker, Grid };
 inline constexpr const char* kGroundPatternNames[] = {"plain", "checker", "grid"};
-// How the march steps towards the ground plane: onto it along the ray, or by
-// its distance as for any surface (sphere tracing; the speed report's baseline).
-enum class GroundSteps { Exact, Sphere };
-inline constexpr const char* kGroundStepsNames[] = {"exact", "sphere"};
-static_assert(std::size(kGroundStepsNames) == static_cast<size_t>(GroundSteps::Sphere) + 1);
+// What the tracer uses besides the field: Bounded, the ground plane's exact
+// distance along the ray (the march steps onto it) and the scene's bounds
+// (a shadow ray ends once they show no sample can darken it); Plain, the
+// field alone (plain sphere tracing, the speed report's baseline).
+enum class Tracing { Bounded, Plain };
+inline constexpr const char* kTracingNames[] = {"bounded", "plain"};
+static_assert(std::size(kTracingNames) == static_cast<size_t>(Tracing::Plain) + 1);
 static_assert(std::size(kShadowModeNames) == static_cast<size_t>(ShadowMode::Improved) + 1);
 static_assert(std::size(kLightingModelNames) == static_cast<size_t>(LightingModel::Phong) + 1);
 static_assert(std::size(kEpsilonModeNames) == static_cast<size_t>(EpsilonMode::Pixel) + 1);
@@ -159,7 +161,7 @@ struct RenderSettings {
     LightingModel lighting = LightingModel::BlinnPhong;
     double exposure = 1.0;           // multiplies the final linear colour
     double stepRelaxation = 1.0;     // omega of over-relaxed primary steps, 1 to 1.9; 1 is plain sphere tracing
-    GroundSteps groundSteps = GroundSteps::Exact;
+    Tracing tracing = Tracing::Bounded;
     int maxDepth = 4;                // bounces of reflected and refracted rays, 0 to kMaxTraceDepth
     double rayWeightCutoff = 1.0 / 256.0;  // secondary rays weighing less (every channel) are not traced
 

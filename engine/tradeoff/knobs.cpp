@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "program/bounds.h"
 #include "scene/camera_frame.h"
 
 namespace sdfwb::tradeoff {
@@ -108,13 +109,21 @@ std::vector<Knob> makeKnobs() {
     k.push_back(knob("step_relaxation", always, [](const Scene& s) {
         return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation);
     }));
-    // The ground plane met along the ray (the default) or sphere traced as any
-    // surface: plain sphere tracing, the speed report's baseline (report.cpp).
+    // The tracer's knowledge beyond the field (the ground plane along the ray,
+    // shadow rays ended by the scene's bounds; the default) or plain sphere
+    // tracing, the speed report's baseline (report.cpp). It changes nothing
+    // in a scene with neither a ground nor shadow rays that bounds can end.
     k.push_back(knob(
-        "ground_steps",
-        [](const Scene& s) { return s.environment.ground.enabled ? std::string() : std::string("no ground"); },
+        "tracing",
         [](const Scene& s) {
-            return except({0, 1}, static_cast<double>(s.render.groundSteps));
+            program::Bounds bounds = program::nodeBounds(s.root);
+            bool shadowRays = s.render.shadows != scene::ShadowMode::None && !s.lights.empty();
+            bool boundedShadows = shadowRays && !bounds.empty && !bounds.infinite;
+            return s.environment.ground.enabled || boundedShadows ? std::string()
+                                                                  : std::string("no ground, no bounded shadow rays");
+        },
+        [](const Scene& s) {
+            return except({0, 1}, static_cast<double>(s.render.tracing));
         }));
     // The ray tree's two limits (sdf/glsl/ray_tree.glsl): bounces, and the
     // weight below which a secondary ray is dropped.

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tradeoff/analysis.h"
+#include "tradeoff/knobs.h"
 
 namespace sdfwb::tradeoff {
 namespace {
@@ -173,17 +174,19 @@ bool relaxedTuned(const SettingResult& r) {
     return r.setting.label.rfind("tuned:", 0) == 0 && r.setting.scene.render.stepRelaxation > 1.0;
 }
 
-// Plain sphere tracing: the default, or where the scene has a ground plane
-// that its default meets along the ray, the default with ground_steps=sphere
-// (when that knob was swept).
+// Plain sphere tracing: the default with tracing=plain when that knob was
+// swept, the default itself when the scene is plain already or the knob
+// changes nothing in it (no ground, no shadow rays its bounds can end).
 std::optional<size_t> plainSphereTracing(const SceneResult& scene) {
     const scene::Scene& s = scene.scene;
     if (s.render.stepRelaxation != 1.0) return std::nullopt;
-    if (!s.environment.ground.enabled || s.render.groundSteps == scene::GroundSteps::Sphere) return 0;
+    if (s.render.tracing == scene::Tracing::Plain) return 0;
     for (size_t i = 0; i < scene.results.size(); ++i) {
         const Setting& setting = scene.results[i].setting;
-        if (setting.knob != nullptr && setting.knob->name == "ground_steps") return i;
+        if (setting.knob != nullptr && setting.knob->name == "tracing") return i;
     }
+    const Knob* tracing = findKnob("tracing");
+    if (tracing != nullptr && !tracing->inert(s).empty()) return 0;
     return std::nullopt;
 }
 
@@ -236,17 +239,18 @@ void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
     }
     if (!any) return;
     out << "## Faster tracing against plain sphere tracing\n\n"
-        << "Plain: the scene's default traced as before the faster tracing: with a ground plane, "
-           "`ground_steps=sphere` (the floor sphere traced as any surface); without one, the default itself (scenes "
-           "with a ground whose `ground_steps` was not swept are left out). Default: the scene's default, which "
-           "meets its ground plane along the ray (`ground_steps` \"exact\"), when its mean error is within 1/255 of "
-           "the plain one's. Default, relaxed: the default with the `step_relaxation` value that has the fewest "
+        << "Plain: the scene's default with `tracing=plain`, plain sphere tracing of the field alone (the floor "
+           "sphere traced as any surface, every shadow ray sampled to its end); the default itself in scenes where "
+           "that knob changes nothing (scenes where it was not swept otherwise are left out). Default: the scene's "
+           "default, `tracing` \"bounded\" (the ground plane met along the ray, shadow rays ended by the scene's "
+           "bounds), when its mean error is within 1/255 of the plain one's. Default, relaxed: the default with the "
+           "`step_relaxation` value that has the fewest "
            "primary steps per sub-sample among those whose mean error is within 1/255 of the plain one's (both "
            "speed-ups together). Tuned, relaxed: the tuned setting (each knob's fastest value within the tuning "
            "slack, combined) when it relaxes steps, under the same error condition. Steps are the primary march's "
            "evaluations, evals all field evaluations (march, normal, material, AO, shadows), per sub-sample. Ratios "
            "are plain over faster, medians over the scenes that have such a setting.\n\n";
-    const char* names[kKinds] = {"default (ground along the ray)", "default, relaxed", "tuned and relaxed"};
+    const char* names[kKinds] = {"default (bounded tracing)", "default, relaxed", "tuned and relaxed"};
     for (size_t b = 0; b < result.backends.size(); ++b) {
         out << "- " << result.backends[b] << ":";
         for (int kind = 0; kind < kKinds; ++kind) {

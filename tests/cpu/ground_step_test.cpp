@@ -1,7 +1,7 @@
-// With ground_steps "exact" the march takes the ground plane along the ray
+// With tracing "bounded" (the default) the march takes the ground plane along the ray
 // (tracer.glsl's groundAhead): rays over an open floor land on it in a step
 // or two, exactly, where a plane primitive at the same height, or the ground
-// with ground_steps "sphere", is closed in on geometrically; rays towards the
+// with tracing "plain", is closed in on geometrically; rays towards the
 // sky are not held back by the floor; the hits are those of the plane
 // primitive, and a floor just past max distance is seen as it was.
 
@@ -63,7 +63,7 @@ TEST(GroundStep, FloorRaysLandOnThePlaneInAFractionOfTheSteps) {
         scene::Scene s = ballOnTheFloor();
         s.render.stepRelaxation = relaxation;
         scene::Scene sphereTraced = s;
-        sphereTraced.render.groundSteps = scene::GroundSteps::Sphere;
+        sphereTraced.render.tracing = scene::Tracing::Plain;
         Traced ground(s), plane(withPlanePrimitive(s)), sphere(sphereTraced);
         long groundSteps = 0, planeSteps = 0, sphereSteps = 0, floorPixels = 0, disagreements = 0;
         for (int y = 0; y < kHeight; ++y) {
@@ -87,7 +87,7 @@ TEST(GroundStep, FloorRaysLandOnThePlaneInAFractionOfTheSteps) {
         EXPECT_GT(floorPixels, kWidth * kHeight / 3) << relaxation;
         EXPECT_LE(disagreements, kWidth * kHeight / 200) << relaxation;  // silhouettes, stepped otherwise
         EXPECT_LE(4 * groundSteps, planeSteps) << relaxation << ": " << groundSteps << " against " << planeSteps;
-        // ground_steps "sphere" steps towards the floor as towards any surface
+        // tracing "plain" steps towards the floor as towards any surface
         EXPECT_LE(4 * groundSteps, sphereSteps) << relaxation << ": " << groundSteps << " against " << sphereSteps;
     }
 }
@@ -116,7 +116,7 @@ TEST(GroundStep, RaysTowardsTheSkyAreNotHeldBackByTheFloor) {
 
 // A floor just past max distance was closed in on step by step until within
 // epsilon of it: a hit when that happened before max distance, as it still
-// does with ground_steps "sphere". One more sample at max distance keeps
+// does with tracing "plain". One more sample at max distance keeps
 // that, where a step onto the plane would end the ray past max distance
 // unchecked; the sample lands on max distance exactly, also after steps
 // that other surfaces limited (a ball beside the ray).
@@ -138,7 +138,7 @@ TEST(GroundStep, AFloorJustPastMaxDistanceIsSeenAsBefore) {
         for (auto [past, seen] : {std::pair{0.5, true}, std::pair{2.0, false}}) {
             s.environment.ground.height = floorMetAt(s.render.maxDistance + past * slack);
             scene::Scene sphereTraced = s;
-            sphereTraced.render.groundSteps = scene::GroundSteps::Sphere;
+            sphereTraced.render.tracing = scene::Tracing::Plain;
             f64::SampleResult exact = Traced(s).at(x, y), sphere = Traced(sphereTraced).at(x, y);
             EXPECT_EQ(exact.hit, seen) << past << " epsilon past max distance, ball " << ball;
             EXPECT_EQ(sphere.hit, seen) << past << " epsilon past max distance, ball " << ball;

@@ -110,7 +110,7 @@ std::vector<ConformanceCase> conformanceCases() {
           {dvec4(-1, shared::GROUND_CHECKER, 0.002, 0), dvec4(0.25, 3, -2, 1), dvec4(0.1, 0.2, 0.3, 0.05)},
           {dvec4(-1, shared::GROUND_GRID, 0.002, 0), dvec4(0.25, 3, -2, 0.5), dvec4(0.1, 0.2, 0.3, 0.04)},
           {dvec4(0, shared::GROUND_GRID, kHuge, 0), dvec4(0, 0, 0, 0.5), dvec4(0.9, 0.8, 0.7, 0.1)},
-          // taken along the ray (ground_steps "exact"): no step above the plane
+          // taken along the ray (tracing "bounded"): no step above the plane
           {dvec4(-1, shared::GROUND_PLAIN, 0, 1), dvec4(0.25, 3, -2, 1), dvec4(0.1, 0.2, 0.3, 0.05)},
           {dvec4(0.5, shared::GROUND_GRID, 0.002, 1), dvec4(0.25, 3, -2, 0.5), dvec4(0.1, 0.2, 0.3, 0.04)}}},
         {Opcode::SdfFormula,

@@ -1,5 +1,5 @@
 // The report's faster-tracing section measures against plain sphere tracing:
-// for a scene with a ground plane, its default with ground_steps=sphere.
+// a scene's default with tracing=plain.
 
 #include <string>
 
@@ -30,7 +30,7 @@ std::string speedupSection(const std::string& report) {
     return at == std::string::npos ? std::string() : report.substr(at, report.find("\n## ", at + 1) - at);
 }
 
-TEST(Report, FasterTracingIsMeasuredAgainstTheGroundSphereTraced) {
+TEST(Report, FasterTracingIsMeasuredAgainstPlainSphereTracing) {
     scene::Scene s;
     s.environment.ground.enabled = true;
     SceneResult scene;
@@ -38,20 +38,20 @@ TEST(Report, FasterTracingIsMeasuredAgainstTheGroundSphereTraced) {
     scene.scene = s;
     scene.reference = s;
     scene::Scene sphere = s, relaxed = s;
-    sphere.render.groundSteps = scene::GroundSteps::Sphere;
+    sphere.render.tracing = scene::Tracing::Plain;
     relaxed.render.stepRelaxation = 1.4;
     scene.results = {measured(nullptr, 0, "default", s, 0.010, 6.0, 12.0, 0.5),
-                     measured("ground_steps", 1, "ground_steps=sphere", sphere, 0.030, 24.0, 30.0, 0.9),
+                     measured("tracing", 1, "tracing=plain", sphere, 0.030, 24.0, 30.0, 0.9),
                      measured("step_relaxation", 1.4, "step_relaxation=1.4", relaxed, 0.009, 5.0, 11.0, 0.6)};
     SweepResult result;
     result.backends = {"cpu"};
     result.scenes = {scene};
     std::string section = speedupSection(writeReport(result, {}));
     ASSERT_FALSE(section.empty());
-    // plain: the sphere-traced ground's figures; the default 4x fewer steps,
+    // plain: tracing=plain's figures; the default 4x fewer steps,
     // 2.5x fewer evaluations, 3x faster; with relaxation too 4.8x, 2.73x, 3.33x
     EXPECT_NE(section.find("| floor.json | cpu | 24.0 | 30.0 |"), std::string::npos) << section;
-    EXPECT_NE(section.find("default (ground along the ray) (1 scenes): 4.00x fewer steps, 2.50x fewer evaluations, "
+    EXPECT_NE(section.find("default (bounded tracing) (1 scenes): 4.00x fewer steps, 2.50x fewer evaluations, "
                            "3.00x faster"),
               std::string::npos)
         << section;
@@ -59,13 +59,15 @@ TEST(Report, FasterTracingIsMeasuredAgainstTheGroundSphereTraced) {
               std::string::npos)
         << section;
 
-    // without a ground the default is plain sphere tracing
+    // where the knob changes nothing (no ground, no shadow rays) the default
+    // is plain sphere tracing
     scene.scene.environment.ground.enabled = false;
+    scene.scene.render.shadows = scene::ShadowMode::None;
     scene.results.erase(scene.results.begin() + 1);
     result.scenes = {scene};
     section = speedupSection(writeReport(result, {}));
     EXPECT_NE(section.find("| floor.json | cpu | 6.0 | 12.0 |"), std::string::npos) << section;
-    EXPECT_NE(section.find("default (ground along the ray) (0 scenes)"), std::string::npos) << section;
+    EXPECT_NE(section.find("default (bounded tracing) (0 scenes)"), std::string::npos) << section;
 }
 
 }  // namespace
