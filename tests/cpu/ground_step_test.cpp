@@ -14,6 +14,7 @@
 #include "program/compile_scene.h"
 #include "scene/camera_frame.h"
 #include "scene/scene.h"
+#include "support/ball_on_the_floor.h"
 
 namespace sdfwb {
 namespace {
@@ -23,17 +24,9 @@ namespace f64 = cpu::f64;
 
 constexpr int kWidth = 64, kHeight = 36;
 
-// A unit ball resting on the floor at height 0, seen from above at a slant.
+// The ball on the floor, seen from above at a slant.
 scene::Scene ballOnTheFloor() {
-    scene::Scene s;
-    scene::Node translate = scene::Node::make(scene::NodeKind::Translate);
-    translate.set("offset", dvec3(0, 1, 0));
-    translate.children.push_back(scene::Node::make(scene::NodeKind::Sphere));
-    s.root.children.push_back(translate);
-    s.environment.ground.enabled = true;
-    s.environment.ground.pattern = scene::GroundPattern::Plain;
-    s.environment.ground.height = 0.0;
-    s.camera.target = dvec3(0, 0.5, 0);
+    scene::Scene s = test::ballOnTheFloor();
     s.camera.elevation = 15.0;
     s.camera.distance = 8.0;
     s.render.maxDistance = 60.0;

@@ -15,6 +15,7 @@
 #include "cpu/interpreter.h"
 #include "program/compile_scene.h"
 #include "scene/scene.h"
+#include "support/ball_on_the_floor.h"
 
 namespace sdfwb {
 namespace {
@@ -103,19 +104,12 @@ TEST(ShadowClear, ARayHeadingAwayIsClearAndOneTowardsTheSphereIsNot) {
     EXPECT_FALSE(f64::shadowRayClear(shadowRayAt(dvec3(0, 2, 0), 0.0, 1.0, 1e-3), light, settings));
 }
 
-// A unit ball resting on an open floor under a light at a slant.
+// The ball on the floor under a light at a slant.
 scene::Scene ballOnTheFloor(scene::ShadowMode shadows) {
-    scene::Scene s;
-    scene::Node translate = scene::Node::make(scene::NodeKind::Translate);
-    translate.set("offset", dvec3(0, 1, 0));
-    translate.children.push_back(scene::Node::make(scene::NodeKind::Sphere));
-    s.root.children.push_back(translate);
-    s.environment.ground.enabled = true;
-    s.environment.ground.height = 0.0;
+    scene::Scene s = test::ballOnTheFloor();
     s.lights = {scene::Light{}};
     s.lights[0].direction = dvec3(0.6, 1.0, 0.3);
     s.lights[0].softness = 8.0;
-    s.camera.target = dvec3(0, 0.5, 0);
     s.camera.elevation = 25.0;
     s.camera.distance = 7.0;
     s.render.shadows = shadows;

@@ -331,7 +331,7 @@ SHARED_FN bool relaxedStepOvershot(TraceState s, Sample field) {
 }
 
 // The ground plane (settings.groundPlane: a ground, and the scene's
-// ground_steps "exact") is the one surface whose distance
+// tracing "bounded") is the one surface whose distance
 // along a ray is known exactly: a ray above it heading down meets it after
 // h / -dir.y, one heading up never does. Its instruction gives no step above
 // the plane (instGround's GROUND_CLEAR_STEP) and the march steps by the least
