@@ -13,6 +13,7 @@ struct Bounds {
     glm::dvec3 max{0.0};
     bool empty = true;     // encloses nothing
     bool infinite = false; // unbounded in some direction
+    bool finite() const { return !empty && !infinite; }  // a box that encloses something
 
     static Bounds box(glm::dvec3 lo, glm::dvec3 hi) { return {lo, hi, false, false}; }
     static Bounds unbounded() { return {glm::dvec3(0.0), glm::dvec3(0.0), false, true}; }

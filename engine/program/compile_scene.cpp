@@ -609,7 +609,6 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
                                    .rayWeightCutoff = r.rayWeightCutoff,
                                    .groundPlane = groundAlongRay(scene) ? 1 : 0,
                                    .groundHeight = ground.enabled ? groundHeightFromEye(ground, eye) : 0.0,
-                                   .groundPresent = ground.enabled ? 1 : 0,
                                    .boundsPresent = bounded ? 1 : 0,
                                    .boundsCenter = dvec3(0.0),
                                    .boundsRadius = 0.0};
@@ -675,7 +674,7 @@ Program compileScene(const scene::Scene& scene, const CompileOptions& options) {
     program.result = result;
     program.groundStart = groundStart;
     Bounds root = nodeBounds(scene.root);
-    program.rootBounded = !root.empty && !root.infinite;
+    program.rootBounded = root.finite();
     if (program.rootBounded) {
         program.rootMin = root.min - frame.eye;
         program.rootMax = root.max - frame.eye;

@@ -42,6 +42,11 @@ std::string always(const Scene&) { return ""; }
 
 std::string noMirrorsOrGlass(const Scene& s) { return s.hasMirrorsOrGlass() ? "" : "no mirrors or glass"; }
 
+std::string noShadowRays(const Scene& s) {
+    if (s.lights.empty()) return "no lights";
+    return s.render.shadows == scene::ShadowMode::None ? "shadows off" : "";
+}
+
 // The same threshold at the camera's target distance in the other unit.
 void convertEpsilon(Scene& s, double value) {
     auto mode = static_cast<scene::EpsilonMode>(static_cast<int>(value));
@@ -89,15 +94,9 @@ std::vector<Knob> makeKnobs() {
         [](const Scene& s) {
             return except({0, 1, 2, 3}, static_cast<double>(s.render.shadows));
         }));
-    k.push_back(knob(
-        "shadow_steps",
-        [](const Scene& s) {
-            if (s.lights.empty()) return std::string("no lights");
-            return s.render.shadows == scene::ShadowMode::None ? std::string("shadows off") : std::string();
-        },
-        [](const Scene& s) {
-            return scaled(s.render.shadowSteps, {0.25, 0.5, 2}, true);
-        }));
+    k.push_back(knob("shadow_steps", noShadowRays, [](const Scene& s) {
+        return scaled(s.render.shadowSteps, {0.25, 0.5, 2}, true);
+    }));
     // Turning AO on where the scene has it off changes the look, not the
     // quality: only scenes with AO sweep its sample count.
     k.push_back(knob(
@@ -116,9 +115,7 @@ std::vector<Knob> makeKnobs() {
     k.push_back(knob(
         "tracing",
         [](const Scene& s) {
-            program::Bounds bounds = program::nodeBounds(s.root);
-            bool shadowRays = s.render.shadows != scene::ShadowMode::None && !s.lights.empty();
-            bool boundedShadows = shadowRays && !bounds.empty && !bounds.infinite;
+            bool boundedShadows = noShadowRays(s).empty() && program::nodeBounds(s.root).finite();
             return s.environment.ground.enabled || boundedShadows ? std::string()
                                                                   : std::string("no ground, no bounded shadow rays");
         },

@@ -49,7 +49,7 @@ TEST(ShadowClear, EndsOnlyRaysThatStayOutOfReachOfEverySurface) {
         settings.boundsPresent = 1;
         settings.boundsCenter = dvec3(unit(random), unit(random), unit(random)) * 3.0;
         settings.boundsRadius = 0.2 + 2.0 * fraction(random);
-        settings.groundPresent = i % 2;
+        settings.groundPlane = i % 2;
         settings.groundHeight = settings.boundsCenter.y - settings.boundsRadius - 0.5 * fraction(random);
         f64::Light light{};
         light.direction = glm::normalize(dvec3(unit(random), unit(random), unit(random)));
@@ -70,7 +70,7 @@ TEST(ShadowClear, EndsOnlyRaysThatStayOutOfReachOfEverySurface) {
             double reach = slope * (shadowT + u) + epsilon;
             ASSERT_GE(glm::length(p - settings.boundsCenter) - settings.boundsRadius, reach * (1 - 1e-12))
                 << "ray " << i << " at u = " << u;
-            if (settings.groundPresent != 0) {
+            if (settings.groundPlane != 0) {
                 ASSERT_GE(p.y - settings.groundHeight, reach * (1 - 1e-12)) << "ray " << i << " at u = " << u;
             }
         }
@@ -98,7 +98,7 @@ TEST(ShadowClear, ARayHeadingAwayIsClearAndOneTowardsTheSphereIsNot) {
     EXPECT_FALSE(f64::shadowRayClear(shadowRayAt(dvec3(0, 2, 0), 0.0, 1.0, 1e-3), light, settings));
     // nor does a light below the ground's horizon
     settings.boundsPresent = 1;
-    settings.groundPresent = 1;
+    settings.groundPlane = 1;
     settings.groundHeight = -1.0;
     light.direction = glm::normalize(dvec3(1, -0.01, 0));
     EXPECT_FALSE(f64::shadowRayClear(shadowRayAt(dvec3(0, 2, 0), 0.0, 1.0, 1e-3), light, settings));
@@ -116,6 +116,18 @@ scene::Scene ballOnTheFloor(scene::ShadowMode shadows) {
     return s;
 }
 
+// The program's trace settings, read and written by the block's own
+// unpacker and packer (parameter_blocks.glsl).
+f64::TraceSettings traceSettingsOf(const program::Program& program) {
+    const glm::dvec4* q = program.params.data() + f64::TRACE_SLOT;
+    return f64::traceSettingsFromSlots(q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
+}
+void writeTraceSettings(program::Program& program, const f64::TraceSettings& settings) {
+    for (int i = 0; i < f64::TRACE_SLOTS; ++i) {
+        program.params[static_cast<size_t>(f64::TRACE_SLOT + i)] = f64::traceSettingsSlot(settings, i);
+    }
+}
+
 struct Traced {
     explicit Traced(const program::Program& p) : program(p), kernel(program), scratch(program) {}
     f64::SampleResult at(int x, int y) { return kernel.trace(scratch, x + 0.5, y + 0.5); }
@@ -128,9 +140,11 @@ struct Traced {
 TEST(ShadowClear, RendersWhatTheWholeRayRendersWithFewerSamples) {
     for (scene::ShadowMode mode : {scene::ShadowMode::Hard, scene::ShadowMode::Soft, scene::ShadowMode::Improved}) {
         program::Program program = program::compileScene(ballOnTheFloor(mode), {kWidth, kHeight, 1});
-        ASSERT_EQ(program.params[static_cast<size_t>(f64::TRACE_SLOT + 5)].w, 1.0) << "a ball has bounds";
+        f64::TraceSettings settings = traceSettingsOf(program);
+        ASSERT_EQ(settings.boundsPresent, 1) << "a ball has bounds";
         program::Program wholeRays = program;
-        wholeRays.params[static_cast<size_t>(f64::TRACE_SLOT + 5)].w = 0.0;  // boundsPresent
+        settings.boundsPresent = 0;
+        writeTraceSettings(wholeRays, settings);
         Traced cleared(program), whole(wholeRays);
         long clearedEvaluations = 0, wholeEvaluations = 0;
         double worst = 0.0;

@@ -45,7 +45,7 @@ TEST(ParameterBlocks, EachPackerUndoesItsUnpacker) {
         [](const std::vector<dvec4>& q) {
             return shared::traceSettingsFromSlots(q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
         },
-        [](const shared::TraceSettings& s, int i) { return shared::traceSettingsSlot(s, i); });
+        [](const shared::TraceSettings& s, int i) { return shared::traceSettingsSlot(s, i); }, {23});
     expectPackUndoesUnpack(
         "Camera", shared::CAMERA_SLOTS,
         [](const std::vector<dvec4>& q) { return shared::cameraFromSlots(q[0], q[1], q[2], q[3]); },

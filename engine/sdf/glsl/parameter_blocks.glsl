@@ -40,7 +40,6 @@ struct TraceSettings {
     real rayWeightCutoff;    // secondary rays lighter than this in every channel are dropped
     int groundPlane;         // 1 when the march takes the ground plane along the ray (tracer.glsl's groundAhead)
     real groundHeight;       // the ground's height in march coordinates (the eye's subtracted)
-    int groundPresent;       // 1 when the scene has a ground plane
     int boundsPresent;       // 1 when every surface but the ground lies in the sphere below
     vec3 boundsCenter;       // march coordinates (tracer.glsl's shadowRayClear)
     real boundsRadius;
@@ -61,11 +60,11 @@ const int MATERIAL_SLOTS = 6;
 // ---- TraceSettings: (maxSteps, maxDistance, epsilon, epsilonPerDistance),
 // (shadowMode, shadowSteps, aoSamples, aoDistance), (lightingModel, relaxation,
 // lightCount, exposure), (ambientLight, maxDepth), (background, rayWeightCutoff),
-// (groundPlane, groundHeight, groundPresent, boundsPresent), (boundsCenter, boundsRadius) ----
+// (groundPlane, groundHeight, boundsPresent, unused), (boundsCenter, boundsRadius) ----
 SHARED_FN TraceSettings traceSettingsFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4, vec4 q5, vec4 q6) {
     return TraceSettings(int(q0.x), q0.y, q0.z, q0.w, int(q1.x), int(q1.y), int(q1.z), q1.w, int(q2.x), q2.y,
-                         int(q2.z), q2.w, xyz(q3), xyz(q4), int(q3.w), q4.w, int(q5.x), q5.y, int(q5.z), int(q5.w),
-                         xyz(q6), q6.w);
+                         int(q2.z), q2.w, xyz(q3), xyz(q4), int(q3.w), q4.w, int(q5.x), q5.y, int(q5.z), xyz(q6),
+                         q6.w);
 }
 SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
     if (i == 0) {
@@ -84,7 +83,7 @@ SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
         return vec4(s.background, s.rayWeightCutoff);
     }
     if (i == 5) {
-        return vec4(real(s.groundPlane), s.groundHeight, real(s.groundPresent), real(s.boundsPresent));
+        return vec4(real(s.groundPlane), s.groundHeight, real(s.boundsPresent), real(0));
     }
     return vec4(s.boundsCenter, s.boundsRadius);
 }

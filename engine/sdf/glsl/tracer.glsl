@@ -659,13 +659,6 @@ SHARED_FN real occluderOpenness(Material m) {
     return max(through.x, max(through.y, through.z));
 }
 
-// Shadow rays (thesis, Algorithms 11-13): hard, soft res = min(res, k h / t), and the
-// improved variant that lets the ray penetrate to res = -1 and remaps with smoothstep.
-// The budget counts each sample by the fraction of the distance its step covers,
-// so a field that steps slowly (a displacement's step is about a tenth of its
-// distance) gets as many steps' worth of progress as an exact one, up to
-// SHADOW_SAMPLE_CAP samples: out of 96 samples there, its shadow rays were
-// called blocked and its shadow came out too dark and too large.
 // What a shadow ray ended with lets through: the improved variant's
 // remapped result (tinted by the transparent occluders it met), the others'
 // result; 1 for a ray not taken (no shadows).
@@ -687,10 +680,17 @@ SHARED_FN vec3 shadowOutcome(TraceState s, TraceSettings settings) {
 // distances stay above m (T + u) + epsilon for every u >= 0 (up to max
 // distance for the ground, which is linear along the ray; for the sphere,
 // squaring gives (1 - m^2) u^2 + 2 b u + c >= 0 with b and c below), none
-// can. (A field that bounds distances loosely could read lower there; the
-// distances themselves would not.) Shadow rays from an open floor towards a
-// light above the scene take no sample at all, and rays that have passed
-// their occluders stop sampling the empty space after them.
+// can. Shadow rays from an open floor towards a light above the scene take no
+// sample at all, and rays that have passed their occluders stop sampling the
+// empty space after them. What the whole ray would have read there and the
+// distances do not say: a field that bounds distances loosely can read
+// lower; soft shadows' estimate between samples (penumbraEstimate) reads
+// down to 1/sqrt(2) of the distances (a light grazing the floor at slope
+// about 1/k darkened the floor by its own plane); and a ray out of budget
+// while its distance still falls was called blocked (convergesWithin). An
+// ended ray keeps what the distances say instead.
+// (boundsPresent is set only with tracing "bounded", under which
+// groundPlane says whether there is a ground.)
 SHARED_FN bool shadowRayClear(TraceState s, Light light, TraceSettings settings) {
     if (s.phase != PHASE_SHADOW || settings.boundsPresent == 0) {
         return false;
@@ -701,7 +701,7 @@ SHARED_FN bool shadowRayClear(TraceState s, Light light, TraceSettings settings)
     }
     vec3 p = shadowOrigin(s) + light.direction * s.shadowT;
     real margin = s.hitEpsilon + slope * s.shadowT;
-    if (settings.groundPresent != 0) {
+    if (settings.groundPlane != 0) {
         real above = heightAboveGround(p, settings.groundHeight) - margin;
         real reach = max(settings.maxDistance - s.shadowT, real(0));
         if (!(above >= real(0)) || !(above + reach * (light.direction.y - slope) >= real(0))) {
@@ -727,6 +727,13 @@ SHARED_FN TraceState skipClearShadowRay(TraceState s, Light light, TraceSettings
     return s;
 }
 
+// Shadow rays (thesis, Algorithms 11-13): hard, soft res = min(res, k h / t), and the
+// improved variant that lets the ray penetrate to res = -1 and remaps with smoothstep.
+// The budget counts each sample by the fraction of the distance its step covers,
+// so a field that steps slowly (a displacement's step is about a tenth of its
+// distance) gets as many steps' worth of progress as an exact one, up to
+// SHADOW_SAMPLE_CAP samples: out of 96 samples there, its shadow rays were
+// called blocked and its shadow came out too dark and too large.
 SHARED_FN TraceState advanceShadow(TraceState s, Sample field, Light light, TraceSettings settings) {
     s.counter = s.counter + 1;
     real d = field.d;
