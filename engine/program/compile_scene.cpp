@@ -589,8 +589,10 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
     const scene::RenderSettings& r = scene.render;
     const scene::Ground& ground = scene.environment.ground;
     const TraceParams& t = program.trace;
-    // shadow rays end by the scene's bounds (tracer.glsl's shadowRayClear)
+    // shadow rays end and the march skips empty space by the scene's bounds
+    // (tracer.glsl's shadowRayClear, emptyMarchAhead)
     bool bounded = program.rootBounded && r.tracing == scene::Tracing::Bounded;
+    int boundsUse = bounded ? shared::BOUNDS_END_SHADOW_RAYS | shared::BOUNDS_SKIP_MARCH : 0;
     shared::TraceSettings settings{.maxSteps = t.maxSteps,
                                    .maxDistance = t.maxDistance,
                                    .epsilon = t.epsilon,
@@ -609,7 +611,7 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
                                    .rayWeightCutoff = r.rayWeightCutoff,
                                    .groundPlane = groundAlongRay(scene) ? 1 : 0,
                                    .groundHeight = ground.enabled ? groundHeightFromEye(ground, eye) : 0.0,
-                                   .boundsPresent = bounded ? 1 : 0,
+                                   .boundsUse = boundsUse,
                                    .boundsCenter = dvec3(0.0),
                                    .boundsRadius = 0.0};
     if (bounded) {

@@ -109,15 +109,15 @@ std::vector<Knob> makeKnobs() {
         return except({1.8, 1.6, 1.4, 1.2, 1.0}, s.render.stepRelaxation);
     }));
     // The tracer's knowledge beyond the field (the ground plane along the ray,
-    // shadow rays ended by the scene's bounds; the default) or plain sphere
-    // tracing, the speed report's baseline (report.cpp). It changes nothing
-    // in a scene with neither a ground nor shadow rays that bounds can end.
+    // the scene's bounds for the march and shadow rays; the default) or plain
+    // sphere tracing, the speed report's baseline (report.cpp). It changes
+    // nothing in a scene with neither a ground nor bounds.
     k.push_back(knob(
         "tracing",
         [](const Scene& s) {
-            bool boundedShadows = noShadowRays(s).empty() && program::nodeBounds(s.root).finite();
-            return s.environment.ground.enabled || boundedShadows ? std::string()
-                                                                  : std::string("no ground, no bounded shadow rays");
+            return s.environment.ground.enabled || program::nodeBounds(s.root).finite()
+                       ? std::string()
+                       : std::string("no ground, no bounds");
         },
         [](const Scene& s) {
             return except({0, 1}, static_cast<double>(s.render.tracing));

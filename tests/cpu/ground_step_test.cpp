@@ -15,6 +15,7 @@
 #include "scene/camera_frame.h"
 #include "scene/scene.h"
 #include "support/ball_on_the_floor.h"
+#include "support/traced_program.h"
 
 namespace sdfwb {
 namespace {
@@ -40,15 +41,8 @@ scene::Scene withPlanePrimitive(scene::Scene s) {
     return s;
 }
 
-struct Traced {
-    explicit Traced(const scene::Scene& s)
-        : program(program::compileScene(s, {kWidth, kHeight, 1})), kernel(program), scratch(program) {}
-    f64::SampleResult at(int x, int y) { return kernel.trace(scratch, x + 0.5, y + 0.5); }
-    f64::Ray ray(int x, int y) const { return kernel.ray(x + 0.5, y + 0.5); }
-
-    program::Program program;
-    f64::Kernel kernel;
-    f64::Scratch scratch;
+struct Traced : test::TracedProgram {
+    explicit Traced(const scene::Scene& s) : test::TracedProgram(s, kWidth, kHeight) {}
 };
 
 TEST(GroundStep, FloorRaysLandOnThePlaneInAFractionOfTheSteps) {
@@ -111,8 +105,9 @@ TEST(GroundStep, RaysTowardsTheSkyAreNotHeldBackByTheFloor) {
 // epsilon of it: a hit when that happened before max distance, as it still
 // does with tracing "plain". One more sample at max distance keeps
 // that, where a step onto the plane would end the ray past max distance
-// unchecked; the sample lands on max distance exactly, also after steps
-// that other surfaces limited (a ball beside the ray).
+// unchecked; the sample lands on max distance exactly, after the march's
+// skip over the empty space (emptyMarchAhead) and, without that skip, after
+// steps that other surfaces limited (a ball beside the ray).
 TEST(GroundStep, AFloorJustPastMaxDistanceIsSeenAsBefore) {
     for (bool ball : {false, true}) {
         scene::Scene s = ballOnTheFloor();
@@ -132,12 +127,18 @@ TEST(GroundStep, AFloorJustPastMaxDistanceIsSeenAsBefore) {
             s.environment.ground.height = floorMetAt(s.render.maxDistance + past * slack);
             scene::Scene sphereTraced = s;
             sphereTraced.render.tracing = scene::Tracing::Plain;
-            f64::SampleResult exact = Traced(s).at(x, y), sphere = Traced(sphereTraced).at(x, y);
+            Traced skipping(s);
+            test::TracedProgram stepping(test::withBoundsUse(skipping.program, f64::BOUNDS_END_SHADOW_RAYS));
+            f64::SampleResult exact = skipping.at(x, y), stepped = stepping.at(x, y);
+            f64::SampleResult sphere = Traced(sphereTraced).at(x, y);
             EXPECT_EQ(exact.hit, seen) << past << " epsilon past max distance, ball " << ball;
+            EXPECT_EQ(stepped.hit, seen) << past << " epsilon past max distance, ball " << ball;
             EXPECT_EQ(sphere.hit, seen) << past << " epsilon past max distance, ball " << ball;
             if (seen) {
                 EXPECT_EQ(exact.t, s.render.maxDistance) << "ball " << ball;
-                EXPECT_GT(exact.steps, ball ? 2 : 1) << "ball " << ball;
+                EXPECT_EQ(exact.steps, 2) << "the skip and the sample, ball " << ball;
+                EXPECT_EQ(stepped.t, s.render.maxDistance) << "ball " << ball;
+                EXPECT_GT(stepped.steps, ball ? 2 : 1) << "ball " << ball;
             }
         }
     }

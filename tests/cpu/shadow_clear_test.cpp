@@ -16,6 +16,7 @@
 #include "program/compile_scene.h"
 #include "scene/scene.h"
 #include "support/ball_on_the_floor.h"
+#include "support/traced_program.h"
 
 namespace sdfwb {
 namespace {
@@ -46,7 +47,7 @@ TEST(ShadowClear, EndsOnlyRaysThatStayOutOfReachOfEverySurface) {
         f64::TraceSettings settings{};
         settings.shadowMode = i % 3 == 0 ? f64::SHADOW_HARD : i % 3 == 1 ? f64::SHADOW_SOFT : f64::SHADOW_IMPROVED;
         settings.maxDistance = 40.0;
-        settings.boundsPresent = 1;
+        settings.boundsUse = f64::BOUNDS_END_SHADOW_RAYS;
         settings.boundsCenter = dvec3(unit(random), unit(random), unit(random)) * 3.0;
         settings.boundsRadius = 0.2 + 2.0 * fraction(random);
         settings.groundPlane = i % 2;
@@ -83,7 +84,7 @@ TEST(ShadowClear, ARayHeadingAwayIsClearAndOneTowardsTheSphereIsNot) {
     f64::TraceSettings settings{};
     settings.shadowMode = f64::SHADOW_SOFT;
     settings.maxDistance = 40.0;
-    settings.boundsPresent = 1;
+    settings.boundsUse = f64::BOUNDS_END_SHADOW_RAYS;
     settings.boundsCenter = dvec3(0.0);
     settings.boundsRadius = 1.0;
     f64::Light light{};
@@ -94,10 +95,10 @@ TEST(ShadowClear, ARayHeadingAwayIsClearAndOneTowardsTheSphereIsNot) {
     // passing beside the sphere within its penumbra's reach (k d / t < 1)
     EXPECT_FALSE(f64::shadowRayClear(shadowRayAt(dvec3(1.1, -2, 0), 0.0, 1.0, 1e-3), light, settings));
     // a scene without bounds (an unbounded primitive) ends no ray early
-    settings.boundsPresent = 0;
+    settings.boundsUse = 0;
     EXPECT_FALSE(f64::shadowRayClear(shadowRayAt(dvec3(0, 2, 0), 0.0, 1.0, 1e-3), light, settings));
     // nor does a light below the ground's horizon
-    settings.boundsPresent = 1;
+    settings.boundsUse = f64::BOUNDS_END_SHADOW_RAYS;
     settings.groundPlane = 1;
     settings.groundHeight = -1.0;
     light.direction = glm::normalize(dvec3(1, -0.01, 0));
@@ -116,36 +117,13 @@ scene::Scene ballOnTheFloor(scene::ShadowMode shadows) {
     return s;
 }
 
-// The program's trace settings, read and written by the block's own
-// unpacker and packer (parameter_blocks.glsl).
-f64::TraceSettings traceSettingsOf(const program::Program& program) {
-    const glm::dvec4* q = program.params.data() + f64::TRACE_SLOT;
-    return f64::traceSettingsFromSlots(q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
-}
-void writeTraceSettings(program::Program& program, const f64::TraceSettings& settings) {
-    for (int i = 0; i < f64::TRACE_SLOTS; ++i) {
-        program.params[static_cast<size_t>(f64::TRACE_SLOT + i)] = f64::traceSettingsSlot(settings, i);
-    }
-}
-
-struct Traced {
-    explicit Traced(const program::Program& p) : program(p), kernel(program), scratch(program) {}
-    f64::SampleResult at(int x, int y) { return kernel.trace(scratch, x + 0.5, y + 0.5); }
-
-    program::Program program;
-    f64::Kernel kernel;
-    f64::Scratch scratch;
-};
-
 TEST(ShadowClear, RendersWhatTheWholeRayRendersWithFewerSamples) {
     for (scene::ShadowMode mode : {scene::ShadowMode::Hard, scene::ShadowMode::Soft, scene::ShadowMode::Improved}) {
         program::Program program = program::compileScene(ballOnTheFloor(mode), {kWidth, kHeight, 1});
-        f64::TraceSettings settings = traceSettingsOf(program);
-        ASSERT_EQ(settings.boundsPresent, 1) << "a ball has bounds";
-        program::Program wholeRays = program;
-        settings.boundsPresent = 0;
-        writeTraceSettings(wholeRays, settings);
-        Traced cleared(program), whole(wholeRays);
+        ASSERT_EQ(test::traceSettingsOf(program).boundsUse, f64::BOUNDS_END_SHADOW_RAYS | f64::BOUNDS_SKIP_MARCH)
+            << "a ball has bounds";
+        // the same primary rays, shadow rays sampled to their ends
+        test::TracedProgram cleared(program), whole(test::withBoundsUse(program, f64::BOUNDS_SKIP_MARCH));
         long clearedEvaluations = 0, wholeEvaluations = 0;
         double worst = 0.0;
         for (int y = 0; y < kHeight; ++y) {

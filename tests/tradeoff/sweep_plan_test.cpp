@@ -81,7 +81,7 @@ TEST(SweepPlan, KnobsThatDoNothingForTheSceneAreNotSwept) {
     EXPECT_EQ(plan.notSwept[1].knob, "ao_samples");
     EXPECT_EQ(plan.notSwept[1].reason, "AO off");
     EXPECT_EQ(plan.notSwept[2].knob, "tracing");
-    EXPECT_EQ(plan.notSwept[2].reason, "no ground, no bounded shadow rays");
+    EXPECT_EQ(plan.notSwept[2].reason, "no ground, no bounds");
     EXPECT_EQ(plan.notSwept[3].knob, "max_depth");
     EXPECT_EQ(plan.notSwept[3].reason, "no mirrors or glass");
     EXPECT_EQ(plan.notSwept[4].knob, "ray_weight_cutoff");

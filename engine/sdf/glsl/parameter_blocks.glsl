@@ -40,10 +40,16 @@ struct TraceSettings {
     real rayWeightCutoff;    // secondary rays lighter than this in every channel are dropped
     int groundPlane;         // 1 when the march takes the ground plane along the ray (tracer.glsl's groundAhead)
     real groundHeight;       // the ground's height in march coordinates (the eye's subtracted)
-    int boundsPresent;       // 1 when every surface but the ground lies in the sphere below
-    vec3 boundsCenter;       // march coordinates (tracer.glsl's shadowRayClear)
+    int boundsUse;           // BOUNDS_* bits: what the tracer takes from the sphere below, in which
+                             // every surface but the ground lies (0 when it knows none)
+    vec3 boundsCenter;       // march coordinates (tracer.glsl's shadowRayClear, emptyMarchAhead)
     real boundsRadius;
 };
+
+// What the tracer takes from the scene's bounding sphere (tracing "bounded"
+// sets both; tests turn one off to compare with the whole rays)
+const int BOUNDS_END_SHADOW_RAYS = 1;  // shadowRayClear
+const int BOUNDS_SKIP_MARCH = 2;       // emptyMarchAhead
 
 const int MAX_LIGHTS = 8;
 const int TRACE_SLOT = 0;
@@ -60,7 +66,7 @@ const int MATERIAL_SLOTS = 6;
 // ---- TraceSettings: (maxSteps, maxDistance, epsilon, epsilonPerDistance),
 // (shadowMode, shadowSteps, aoSamples, aoDistance), (lightingModel, relaxation,
 // lightCount, exposure), (ambientLight, maxDepth), (background, rayWeightCutoff),
-// (groundPlane, groundHeight, boundsPresent, unused), (boundsCenter, boundsRadius) ----
+// (groundPlane, groundHeight, boundsUse, unused), (boundsCenter, boundsRadius) ----
 SHARED_FN TraceSettings traceSettingsFromSlots(vec4 q0, vec4 q1, vec4 q2, vec4 q3, vec4 q4, vec4 q5, vec4 q6) {
     return TraceSettings(int(q0.x), q0.y, q0.z, q0.w, int(q1.x), int(q1.y), int(q1.z), q1.w, int(q2.x), q2.y,
                          int(q2.z), q2.w, xyz(q3), xyz(q4), int(q3.w), q4.w, int(q5.x), q5.y, int(q5.z), xyz(q6),
@@ -83,7 +89,7 @@ SHARED_FN vec4 traceSettingsSlot(TraceSettings s, int i) {
         return vec4(s.background, s.rayWeightCutoff);
     }
     if (i == 5) {
-        return vec4(real(s.groundPlane), s.groundHeight, real(s.boundsPresent), real(0));
+        return vec4(real(s.groundPlane), s.groundHeight, real(s.boundsUse), real(0));
     }
     return vec4(s.boundsCenter, s.boundsRadius);
 }

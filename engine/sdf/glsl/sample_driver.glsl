@@ -81,6 +81,7 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
         for (; i < limit; ++i) {
             Light light = sceneLight(lightIndex(s));
             s = skipClearShadowRay(s, light, settings);
+            s = skipEmptyMarch(s, settings);
             if (traceNeedsSample(s) && !sampled) {
                 if (materialSampledApart() && traceMaterialReads(s) == MATERIAL_READS_SHADING) {
                     break;

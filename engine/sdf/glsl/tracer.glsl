@@ -387,6 +387,68 @@ SHARED_FN TraceState leaveStep(TraceState s, Sample field, TraceSettings setting
     return endMarchIfSpent(s, settings);
 }
 
+// How far the march can go from its next point without a sample (tracing
+// "bounded"; 0: not at all). Every surface but the ground lies in the sphere
+// settings.boundsCenter, boundsRadius, and a point farther than epsilon from
+// every surface is no hit. From a point outside that sphere widened by the
+// ray's largest epsilon (at max distance), above the ground by as much, the
+// ray meets nothing before it enters the widened sphere or reaches the ground
+// plane (groundAhead), whichever comes first; GROUND_CLEAR_STEP when it does
+// neither. The entry is taken one margin early, which its rounding cannot
+// carry into the sphere. Outside the sphere an exact field steps towards the
+// scene by the distance to its surfaces, so rays aimed at it save the steps
+// in from the eye, rays that pass it stop sampling once they leave it, and
+// rays that miss it take no sample at all. A field that bounds its distance
+// loosely could read below epsilon out there; the march no longer asks it.
+SHARED_FN real emptyMarchAhead(TraceState s, TraceSettings settings) {
+    if (s.phase != PHASE_MARCH || s.inside || (settings.boundsUse & BOUNDS_SKIP_MARCH) == 0) {
+        return real(0);
+    }
+    real margin = hitEpsilonAt(settings, s.pathLength + settings.maxDistance);
+    vec3 p = s.rayOrigin + s.rayDirection * s.t;
+    if (settings.groundPlane != 0 && !(heightAboveGround(p, settings.groundHeight) > margin)) {
+        return real(0);
+    }
+    vec3 v = p - settings.boundsCenter;
+    real r = settings.boundsRadius + margin;
+    real c = dot3(v, v) - r * r;
+    if (!(c > real(0))) {
+        return real(0);
+    }
+    real b = dot3(v, s.rayDirection);
+    real entry = GROUND_CLEAR_STEP;
+    if (b < real(0) && b * b >= c) {
+        entry = max(-b - sqrt(b * b - c) - margin, real(0));
+    }
+    return min(entry, groundAhead(s, settings));
+}
+
+// The driver asks before each evaluation: a march with empty space ahead
+// (emptyMarchAhead) crosses it in one step, which takes no evaluation, onto
+// the ground plane (capped at max distance, where one more sample decides
+// as in advanceMarch) or to the widened sphere's entry; a ray that meets
+// neither ends on the background. Skips shorter than the margin are not
+// taken: the march is already at the sphere.
+SHARED_FN TraceState skipEmptyMarch(TraceState s, TraceSettings settings) {
+    real ahead = emptyMarchAhead(s, settings);
+    if (!(ahead > hitEpsilonAt(settings, s.pathLength + settings.maxDistance))) {
+        return s;
+    }
+    real plane = groundAhead(s, settings);
+    bool ground = plane < GROUND_CLEAR_STEP && ahead == plane;
+    s.steps = s.steps + 1;
+    s.marchRadius = real(0);  // no relaxed step to check, no previous distance
+    s.marchStep = real(0);
+    s.lastDistance = real(0);
+    if (!ground && !(s.t + ahead <= settings.maxDistance)) {
+        s.color = settings.background;
+        s.phase = PHASE_DONE;
+        return s;
+    }
+    s.t = ground ? min(s.t + ahead, settings.maxDistance) : s.t + ahead;
+    return endMarchIfSpent(s, settings);
+}
+
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
     if (atPrimaryRayStart(s) && field.d < -rayEpsilon(s, settings) && field.material.transparency > real(0) &&
         settings.maxDepth > 0) {
@@ -671,7 +733,7 @@ SHARED_FN vec3 shadowOutcome(TraceState s, TraceSettings settings) {
 
 // Whether a shadow ray's remaining samples can no longer change its outcome,
 // so that it ends before taking them. Every surface but the ground lies in
-// the sphere settings.boundsCenter, boundsRadius (when boundsPresent), so
+// the sphere settings.boundsCenter, boundsRadius (BOUNDS_END_SHADOW_RAYS), so
 // the points p + u dir of the ray from its next sample p = o + T dir on are at
 // least |p + u dir - c| - R from them and (p + u dir).y - groundHeight from
 // the ground. A sample lowers the result only where its distance reads below
@@ -689,10 +751,10 @@ SHARED_FN vec3 shadowOutcome(TraceState s, TraceSettings settings) {
 // about 1/k darkened the floor by its own plane); and a ray out of budget
 // while its distance still falls was called blocked (convergesWithin). An
 // ended ray keeps what the distances say instead.
-// (boundsPresent is set only with tracing "bounded", under which
-// groundPlane says whether there is a ground.)
+// (boundsUse is set only with tracing "bounded", under which groundPlane
+// says whether there is a ground.)
 SHARED_FN bool shadowRayClear(TraceState s, Light light, TraceSettings settings) {
-    if (s.phase != PHASE_SHADOW || settings.boundsPresent == 0) {
+    if (s.phase != PHASE_SHADOW || (settings.boundsUse & BOUNDS_END_SHADOW_RAYS) == 0) {
         return false;
     }
     real slope = settings.shadowMode == SHADOW_HARD ? real(0) : max(s.shadowResult, real(0)) / light.softness;
