@@ -91,9 +91,7 @@ bool FreeSpace::fieldClear(const glm::dvec3& centre, const glm::dvec3& half) con
 }
 
 double FreeSpace::restingHeight(const glm::dvec3& centre, const glm::dvec3& half) const {
-    // a spot found on a surface by the float field's pick can sit that
-    // field's error into the surface: it still rests on it
-    double slack = fieldSlack(half), bottom = centre.y - half.y;
+    double slack = boundsSlack(half), bottom = centre.y - half.y;
     double support = -std::numeric_limits<double>::infinity();
     const scene::Ground& ground = scene_.environment.ground;
     if (ground.enabled && ground.height <= bottom + slack) support = ground.height;

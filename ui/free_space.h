@@ -36,8 +36,7 @@ public:
 
     // The height of `centre` that sets the box on the highest support under
     // it (the ground or an obstacle's top, whichever is highest at or below
-    // its bottom, or above it by the float field's error at most); `centre.y`
-    // when nothing bounded supports it.
+    // its bottom); `centre.y` when nothing bounded supports it.
     double restingHeight(const glm::dvec3& centre, const glm::dvec3& half) const;
 
     // The highest top of the bounded obstacles and the ground; the ground's

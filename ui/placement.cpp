@@ -151,6 +151,9 @@ bool takesAnotherChild(const scene::Node& node) {
 
 PlacementSearch searchPlacement(const scene::Scene& scene, const glm::dvec3& half) {
     cpu::PickResult centre = cpu::pickViewCentre(scene);
+    // the float march lands on the ground plane to within its rounding, on
+    // either side; a box set on it goes on the plane itself
+    if (centre.hit && centre.ground) centre.position.y = scene.environment.ground.height;
     scene::CameraFrame frame = scene::cameraFrame(scene.camera);
     glm::dvec3 first =
         centre.hit ? centre.position + centre.normal * support(half, centre.normal) : scene.camera.target;

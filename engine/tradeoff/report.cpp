@@ -176,7 +176,7 @@ bool relaxedTuned(const SettingResult& r) {
 
 // Plain sphere tracing: the default with tracing=plain when that knob was
 // swept, the default itself when the scene is plain already or the knob
-// changes nothing in it (no ground, no shadow rays its bounds can end).
+// changes nothing in it (no ground, no bounds).
 std::optional<size_t> plainSphereTracing(const SceneResult& scene) {
     const scene::Scene& s = scene.scene;
     if (s.render.stepRelaxation != 1.0) return std::nullopt;

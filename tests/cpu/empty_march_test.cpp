@@ -63,7 +63,8 @@ TEST(EmptyMarch, SkipsOnlySpaceFartherThanEpsilonFromTheBoundsAndAboveTheGround)
             ASSERT_GE(glm::length(p - settings.boundsCenter) - settings.boundsRadius, epsilon * (1 - 1e-9))
                 << "ray " << i << " at u = " << u;
             if (settings.groundPlane != 0) {
-                ASSERT_GE(p.y - settings.groundHeight, -1e-9) << "ray " << i << " at u = " << u;
+                // from a point clear of the ground onto it, never below it
+                ASSERT_GE(p.y - settings.groundHeight, k == 0 ? epsilon : -1e-9) << "ray " << i << " at u = " << u;
             }
         }
     }
@@ -94,6 +95,31 @@ TEST(EmptyMarch, StopsAtTheWidenedSphereAndNeverFromInsideIt) {
     settings.groundHeight = -2.0;
     dvec3 down = glm::normalize(dvec3(0, -1, 1));
     EXPECT_NEAR(f64::emptyMarchAhead(marchAt(dvec3(0, 0, 5), down, 0.0), settings), 2.0 * std::sqrt(2.0), 1e-12);
+}
+
+// A ray that enters the bounds after max distance, above a floor it would
+// meet just past max distance: the skip stops at max distance, where one
+// sample decides whether the floor is within epsilon (advanceMarch), and
+// a ray that meets neither ends on the background without a sample.
+TEST(EmptyMarch, AGroundPastMaxDistanceGetsItsSampleThere) {
+    f64::TraceSettings settings{};
+    settings.maxDistance = 10.0;
+    settings.epsilon = 1e-2;
+    settings.boundsUse = f64::BOUNDS_SKIP_MARCH;
+    settings.boundsCenter = dvec3(0, -0.6, 10.95);  // entered 10.06 away (one margin early)
+    settings.boundsRadius = 1.0;
+    settings.groundPlane = 1;
+    settings.groundHeight = -1.005;
+    dvec3 down = glm::normalize(dvec3(0, -0.1, 1));  // meets the floor 10.1 away
+    ASSERT_NEAR(f64::emptyMarchAhead(marchAt(dvec3(0, 0, 0), down, 0.0), settings), 10.0636, 1e-3);
+    f64::TraceState s = f64::skipEmptyMarch(marchAt(dvec3(0, 0, 0), down, 0.0), settings);
+    EXPECT_EQ(s.phase, f64::PHASE_MARCH);
+    EXPECT_EQ(s.t, settings.maxDistance);
+    EXPECT_EQ(s.steps, 0) << "a skip takes no step of the budget";
+    settings.groundPlane = 0;
+    s = f64::skipEmptyMarch(marchAt(dvec3(0, 0, 0), down, 0.0), settings);
+    EXPECT_EQ(s.phase, f64::PHASE_DONE);
+    EXPECT_FALSE(s.hit);
 }
 
 // The ball on the floor, and the ball alone, seen from above at a slant.

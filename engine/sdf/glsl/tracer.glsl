@@ -129,9 +129,10 @@ SHARED_FN bool traceNeedsSample(TraceState s) {
 }
 
 // The primary ray's first sample, at the eye: where the march learns whether
-// the eye starts inside a solid or inside glass.
+// the eye starts inside a solid or inside glass. (A march that skipped empty
+// space from the eye, skipEmptyMarch, has taken no step but is past it.)
 SHARED_FN bool atPrimaryRayStart(TraceState s) {
-    return s.steps == 0 && s.depth == 0;
+    return s.steps == 0 && s.depth == 0 && s.t == real(0);
 }
 
 // What an evaluation reads of the material it returns, as bits. Only the
@@ -394,12 +395,14 @@ SHARED_FN TraceState leaveStep(TraceState s, Sample field, TraceSettings setting
 // ray's largest epsilon (at max distance), above the ground by as much, the
 // ray meets nothing before it enters the widened sphere or reaches the ground
 // plane (groundAhead), whichever comes first; GROUND_CLEAR_STEP when it does
-// neither. The entry is taken one margin early, which its rounding cannot
-// carry into the sphere. Outside the sphere an exact field steps towards the
-// scene by the distance to its surfaces, so rays aimed at it save the steps
-// in from the eye, rays that pass it stop sampling once they leave it, and
-// rays that miss it take no sample at all. A field that bounds its distance
-// loosely could read below epsilon out there; the march no longer asks it.
+// neither. The entry, c / (-b + sqrt(r^2 - |v - b dir|^2)) for the unit ray
+// direction every ray has, avoids the cancellation of -b - sqrt(b^2 - c) at
+// grazing rays, and is taken one margin early. Outside the sphere an exact
+// field steps towards the scene by the distance to its surfaces, so rays
+// that pass the scene stop sampling once they leave it, rays that miss it
+// take no sample at all, and floor rays land on the ground in one step. A
+// field that bounds its distance loosely could read below epsilon out there;
+// the march no longer asks it.
 SHARED_FN real emptyMarchAhead(TraceState s, TraceSettings settings) {
     if (s.phase != PHASE_MARCH || s.inside || (settings.boundsUse & BOUNDS_SKIP_MARCH) == 0) {
         return real(0);
@@ -416,37 +419,39 @@ SHARED_FN real emptyMarchAhead(TraceState s, TraceSettings settings) {
         return real(0);
     }
     real b = dot3(v, s.rayDirection);
+    vec3 across = v - s.rayDirection * b;  // from the centre to the ray's closest point
+    real chord = r * r - dot3(across, across);
     real entry = GROUND_CLEAR_STEP;
-    if (b < real(0) && b * b >= c) {
-        entry = max(-b - sqrt(b * b - c) - margin, real(0));
+    if (b < real(0) && chord >= real(0)) {
+        entry = max(c / (safeSqrt(chord) - b) - margin, real(0));
     }
     return min(entry, groundAhead(s, settings));
 }
 
 // The driver asks before each evaluation: a march with empty space ahead
-// (emptyMarchAhead) crosses it in one step, which takes no evaluation, onto
-// the ground plane (capped at max distance, where one more sample decides
-// as in advanceMarch) or to the widened sphere's entry; a ray that meets
-// neither ends on the background. Skips shorter than the margin are not
-// taken: the march is already at the sphere.
+// (emptyMarchAhead) crosses it without an evaluation or a step of its
+// budget, onto the ground plane or to the widened sphere's entry; a ray
+// that meets neither within max distance ends on the background, and one
+// whose ground lies past it takes one more sample at max distance, which
+// decides as in advanceMarch. Skips shorter than the margin are not taken:
+// the march is already at the sphere.
 SHARED_FN TraceState skipEmptyMarch(TraceState s, TraceSettings settings) {
     real ahead = emptyMarchAhead(s, settings);
     if (!(ahead > hitEpsilonAt(settings, s.pathLength + settings.maxDistance))) {
         return s;
     }
     real plane = groundAhead(s, settings);
-    bool ground = plane < GROUND_CLEAR_STEP && ahead == plane;
-    s.steps = s.steps + 1;
+    bool beyond = !(s.t + ahead <= settings.maxDistance);
     s.marchRadius = real(0);  // no relaxed step to check, no previous distance
     s.marchStep = real(0);
     s.lastDistance = real(0);
-    if (!ground && !(s.t + ahead <= settings.maxDistance)) {
+    if (beyond && !(plane < GROUND_CLEAR_STEP)) {
         s.color = settings.background;
         s.phase = PHASE_DONE;
         return s;
     }
-    s.t = ground ? min(s.t + ahead, settings.maxDistance) : s.t + ahead;
-    return endMarchIfSpent(s, settings);
+    s.t = beyond ? settings.maxDistance : s.t + ahead;
+    return s;
 }
 
 SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings settings) {
