@@ -135,9 +135,9 @@ scene::Scene ballScene(bool floor) {
 TEST(EmptyMarch, FindsTheSurfacesTheSteppingMarchFindsInFewerSamples) {
     for (bool floor : {true, false}) {
         program::Program program = program::compileScene(ballScene(floor), {kWidth, kHeight, 1});
-        ASSERT_NE(test::traceSettingsOf(program).boundsUse & f64::BOUNDS_SKIP_MARCH, 0) << "a ball has bounds";
+        f64::TraceSettings settings = test::traceSettingsOf(program);
+        ASSERT_NE(settings.boundsUse & f64::BOUNDS_SKIP_MARCH, 0) << "a ball has bounds";
         test::TracedProgram skipping(program), stepping(test::withBoundsUse(program, 0));
-        double epsilon = test::traceSettingsOf(program).epsilon;
         long skippingSteps = 0, steppingSteps = 0, hits = 0, untouched = 0;
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
@@ -151,7 +151,7 @@ TEST(EmptyMarch, FindsTheSurfacesTheSteppingMarchFindsInFewerSamples) {
                 }
                 ++hits;
                 // the same surface point, to within the hit epsilon's reach along the ray
-                double slack = 4.0 * std::max(epsilon, test::traceSettingsOf(program).epsilonPerDistance * b.t);
+                double slack = 4.0 * std::max(settings.epsilon, settings.epsilonPerDistance * b.t);
                 EXPECT_NEAR(a.t, b.t, slack) << x << ", " << y << " floor " << floor;
             }
         }

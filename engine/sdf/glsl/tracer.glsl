@@ -389,9 +389,10 @@ SHARED_FN TraceState leaveStep(TraceState s, Sample field, TraceSettings setting
 }
 
 // How far the march can go from its next point without a sample (tracing
-// "bounded"; 0: not at all). Every surface but the ground lies in the sphere
-// settings.boundsCenter, boundsRadius, and a point farther than epsilon from
-// every surface is no hit. From a point outside that sphere widened by the
+// "bounded"; 0: not at all, or no farther than the margin below, where the
+// march is already at the sphere). Every surface but the ground lies in the
+// sphere settings.boundsCenter, boundsRadius, and a point farther than
+// epsilon from every surface is no hit. From a point outside that sphere widened by the
 // ray's largest epsilon (at max distance), above the ground by as much, the
 // ray meets nothing before it enters the widened sphere or reaches the ground
 // plane (groundAhead), whichever comes first; GROUND_CLEAR_STEP when it does
@@ -423,9 +424,10 @@ SHARED_FN real emptyMarchAhead(TraceState s, TraceSettings settings) {
     real chord = r * r - dot3(across, across);
     real entry = GROUND_CLEAR_STEP;
     if (b < real(0) && chord >= real(0)) {
-        entry = max(c / (safeSqrt(chord) - b) - margin, real(0));
+        entry = c / (safeSqrt(chord) - b) - margin;
     }
-    return min(entry, groundAhead(s, settings));
+    // the ground, when ahead, is farther than the height checked above
+    return entry > margin ? min(entry, groundAhead(s, settings)) : real(0);
 }
 
 // The driver asks before each evaluation: a march with empty space ahead
@@ -433,11 +435,10 @@ SHARED_FN real emptyMarchAhead(TraceState s, TraceSettings settings) {
 // budget, onto the ground plane or to the widened sphere's entry; a ray
 // that meets neither within max distance ends on the background, and one
 // whose ground lies past it takes one more sample at max distance, which
-// decides as in advanceMarch. Skips shorter than the margin are not taken:
-// the march is already at the sphere.
+// decides as in advanceMarch.
 SHARED_FN TraceState skipEmptyMarch(TraceState s, TraceSettings settings) {
     real ahead = emptyMarchAhead(s, settings);
-    if (!(ahead > hitEpsilonAt(settings, s.pathLength + settings.maxDistance))) {
+    if (!(ahead > real(0))) {
         return s;
     }
     real plane = groundAhead(s, settings);
