@@ -589,10 +589,16 @@ void writeSceneBlocks(Program& program, const scene::Scene& scene, const dvec3& 
     const scene::RenderSettings& r = scene.render;
     const scene::Ground& ground = scene.environment.ground;
     const TraceParams& t = program.trace;
-    // shadow rays end and the march skips empty space by the scene's bounds
-    // (tracer.glsl's shadowRayClear, emptyMarchAhead)
+    // shadow rays end, the march skips empty space and a floor far from the
+    // objects is shaded as a plane by the scene's bounds (tracer.glsl's
+    // shadowRayClear, emptyMarchAhead, onlyGroundWithin)
     bool bounded = program.rootBounded && r.tracing == scene::Tracing::Bounded;
     int boundsUse = bounded ? shared::BOUNDS_END_SHADOW_RAYS | shared::BOUNDS_SKIP_MARCH : 0;
+    const scene::Material* groundMaterial = scene.findMaterial(ground.material);
+    bool bumpedGround = groundMaterial != nullptr && groundMaterial->bump != scene::BumpPattern::None;
+    if (bounded && ground.enabled && !bumpedGround) {
+        boundsUse |= shared::BOUNDS_FLAT_GROUND;
+    }
     shared::TraceSettings settings{.maxSteps = t.maxSteps,
                                    .maxDistance = t.maxDistance,
                                    .epsilon = t.epsilon,

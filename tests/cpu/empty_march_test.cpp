@@ -157,7 +157,9 @@ TEST(EmptyMarch, FindsTheSurfacesTheSteppingMarchFindsInFewerSamples) {
         }
         EXPECT_GT(hits, kWidth * kHeight / 20);
         // without a floor, the rays that miss the ball's bounding sphere take no sample
-        if (!floor) EXPECT_GT(untouched, kWidth * kHeight / 2);
+        if (!floor) {
+            EXPECT_GT(untouched, kWidth * kHeight / 2);
+        }
         EXPECT_LT(3 * skippingSteps, 2 * steppingSteps)
             << "floor " << floor << ": " << skippingSteps << " against " << steppingSteps;
     }

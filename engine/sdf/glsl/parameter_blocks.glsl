@@ -47,9 +47,11 @@ struct TraceSettings {
 };
 
 // What the tracer takes from the scene's bounding sphere (tracing "bounded"
-// sets both; tests turn one off to compare with the whole rays)
+// sets them, the last for a ground without a bump map; tests turn one off
+// to compare with the whole rays)
 const int BOUNDS_END_SHADOW_RAYS = 1;  // shadowRayClear
 const int BOUNDS_SKIP_MARCH = 2;       // emptyMarchAhead
+const int BOUNDS_FLAT_GROUND = 4;      // onlyGroundWithin
 
 const int MAX_LIGHTS = 8;
 const int TRACE_SLOT = 0;

@@ -583,19 +583,8 @@ SHARED_FN vec3 bumpedNormal(vec3 n, vec3 bumpSum, real epsilon) {
     return normalize3(n - (g - n * dot3(g, n)));
 }
 
-// A hit none of whose samples is inside is on a feature thinner than
-// epsilon: it counts only where the ray gets into it (PHASE_ENTER). A ray
-// out of steps keeps its hit.
-SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
-    bool thin = s.lastDistance >= -ENTER_DEPTH * s.hitEpsilon;
-    if (thin && s.steps < settings.maxSteps) {
-        s.hit = false;
-        s.phase = PHASE_ENTER;
-        s.steps = s.steps + s.counter;  // the normal's samples count against the budget that bounds the loop
-        s.enterSlope = real(0);
-        s.marchStep = real(0);  // no step yet to measure a slope over
-        return endMarchIfSpent(s, settings);
-    }
+// The normal from the samples' sum, then the material phase.
+SHARED_FN TraceState beginMaterial(TraceState s) {
     s.normal = normalize3(s.normalSum);
     // The samples sum to about 4 epsilon grad d (advanceNormal). A field
     // steeper than the distance keeps the offsets as they are: they are
@@ -611,6 +600,22 @@ SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
     s.counter = HIT_MATERIAL_SAMPLE + 1 - s.materialSamples;
     s.bumpSum = vec3(real(0));
     return s;
+}
+
+// A hit none of whose samples is inside is on a feature thinner than
+// epsilon: it counts only where the ray gets into it (PHASE_ENTER). A ray
+// out of steps keeps its hit.
+SHARED_FN TraceState finishNormal(TraceState s, TraceSettings settings) {
+    bool thin = s.lastDistance >= -ENTER_DEPTH * s.hitEpsilon;
+    if (thin && s.steps < settings.maxSteps) {
+        s.hit = false;
+        s.phase = PHASE_ENTER;
+        s.steps = s.steps + s.counter;  // the normal's samples count against the budget that bounds the loop
+        s.enterSlope = real(0);
+        s.marchStep = real(0);  // no step yet to measure a slope over
+        return endMarchIfSpent(s, settings);
+    }
+    return beginMaterial(s);
 }
 
 // The bump samples around the hit, then the hit's material with its image
@@ -684,6 +689,47 @@ SHARED_FN TraceState advanceOcclusion(TraceState s, Sample field, TraceSettings 
     }
     s.ao = saturate(real(1) - s.occlusion / settings.aoDistance);
     return beginShading(s, settings);
+}
+
+// How far, as a multiple of the hit epsilon, the normal's samples reach from
+// the hit: the tetrahedron's vertices sqrt(3) away, the probe at most
+// 1 + NORMAL_PROBE (advanceNormal).
+const real NORMAL_REACH = real(2);
+
+// Whether the field within `reach` of the hit is the ground plane's alone
+// (BOUNDS_FLAT_GROUND): the hit lies farther than twice that plus epsilon
+// from the sphere settings.boundsCenter, boundsRadius, which holds every
+// other surface. Each point within reach is then more than reach + epsilon
+// from them, and at most that above the plane, so the union reads the
+// plane's y - groundHeight there.
+SHARED_FN bool onlyGroundWithin(TraceState s, TraceSettings settings, real reach) {
+    if ((settings.boundsUse & BOUNDS_FLAT_GROUND) == 0 || s.inside) {
+        return false;
+    }
+    vec3 v = s.hitPoint - settings.boundsCenter;
+    real r = settings.boundsRadius + real(2) * reach + s.hitEpsilon;
+    return dot3(v, v) > r * r;
+}
+
+// The driver asks before each evaluation: a hit with only the ground around
+// it takes what the plane's samples would give instead of sampling it. Its
+// four normal samples y_i - groundHeight sum to 4 epsilon (0, 1, 0) (the
+// tetrahedron's vertices sum to 0 and their y's squares to 4), the normal
+// (0, 1, 0) at unit slope, and the lower two are inside: no thin feature.
+// Its occlusion samples along that normal read d + h_i against h_i, no
+// occlusion (the hit's own d within epsilon of 0). A floor far from the
+// scene's objects costs no normal or occlusion samples. (The compiler sets the bit only for a ground without a bump map, whose
+// normal samples would also sum the map's heights.)
+SHARED_FN TraceState skipFlatGround(TraceState s, TraceSettings settings) {
+    if (s.phase == PHASE_NORMAL && s.counter == 0 && onlyGroundWithin(s, settings, NORMAL_REACH * s.hitEpsilon)) {
+        s.normalSum = vec3(real(0), real(4) * s.hitEpsilon, real(0));
+        return beginMaterial(s);
+    }
+    real aoReach = max(settings.aoDistance, NORMAL_REACH * s.hitEpsilon);  // its normal is the plane's too
+    if (s.phase == PHASE_AO && s.counter == 0 && onlyGroundWithin(s, settings, aoReach)) {
+        return beginShading(s, settings);  // beginOcclusion left ao at 1
+    }
+    return s;
 }
 
 // The penumbra estimate k h / t at the ray's closest approach to the occluder
