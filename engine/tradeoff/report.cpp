@@ -239,18 +239,18 @@ void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
     }
     if (!any) return;
     out << "## Faster tracing against plain sphere tracing\n\n"
-        << "Plain: the scene's default with `tracing=plain`, plain sphere tracing of the field alone (the floor "
-           "sphere traced as any surface, the march sampling its way past the scene, every shadow ray sampled to its "
+        << "Plain: the scene's default with `tracing=plain`, plain sphere tracing of the field alone (the ground "
+           "plane traced as any surface, the march sampling its way past the scene, every shadow ray sampled to its "
            "end); the default itself in scenes where that knob changes nothing (scenes where it was not swept "
            "otherwise are left out). Default: the scene's default, `tracing` \"bounded\" (the ground plane met along "
-           "the ray, empty space outside the scene's bounds crossed in one step, shadow rays ended by them), when "
-           "its mean error is within 1/255 of the plain one's. Default, relaxed: the default with the "
-           "`step_relaxation` value that has the fewest primary steps per sub-sample among those whose mean error is "
-           "within 1/255 of the plain one's (both speed-ups together). Tuned, relaxed: the tuned setting (each "
-           "knob's fastest value within the tuning slack, combined) when it relaxes steps, under the same error "
-           "condition. Steps are the primary march's evaluations, evals all field evaluations (march, normal, "
-           "material, AO, shadows), per sub-sample. Ratios are plain over faster, medians over the scenes that have "
-           "such a setting.\n\n";
+           "the ray, empty space outside the scene's bounds crossed in one step, the floor far from them shaded "
+           "as a plane, shadow rays ended by them), when its mean error is within 1/255 of the plain one's. "
+           "Default, relaxed: the default with the `step_relaxation` value that has the fewest primary steps per "
+           "sub-sample among those whose mean error is within 1/255 of the plain one's (both speed-ups together). "
+           "Tuned, relaxed: the tuned setting (each knob's fastest value within the tuning slack, combined) when it "
+           "relaxes steps, under the same error condition. Steps are the primary march's evaluations, evals all "
+           "field evaluations (march, normal, material, AO, shadows), per sub-sample. Ratios are plain over faster, "
+           "medians over the scenes that have such a setting.\n\n";
     const char* names[kKinds] = {"default (bounded tracing)", "default, relaxed", "tuned and relaxed"};
     for (size_t b = 0; b < result.backends.size(); ++b) {
         out << "- " << result.backends[b] << ":";
