@@ -137,7 +137,8 @@ TEST(EmptyMarch, FindsTheSurfacesTheSteppingMarchFindsInFewerSamples) {
         program::Program program = program::compileScene(ballScene(floor), {kWidth, kHeight, 1});
         f64::TraceSettings settings = test::traceSettingsOf(program);
         ASSERT_NE(settings.boundsUse & f64::BOUNDS_SKIP_MARCH, 0) << "a ball has bounds";
-        test::TracedProgram skipping(program), stepping(test::withBoundsUse(program, 0));
+        test::TracedProgram skipping(program),
+            stepping(test::withBoundsUse(program, settings.boundsUse & ~f64::BOUNDS_SKIP_MARCH));
         long skippingSteps = 0, steppingSteps = 0, hits = 0, untouched = 0;
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {

@@ -697,17 +697,21 @@ SHARED_FN TraceState advanceOcclusion(TraceState s, Sample field, TraceSettings 
 const real NORMAL_REACH = real(2);
 
 // Whether the field within `reach` of the hit is the ground plane's alone
-// (BOUNDS_FLAT_GROUND): the hit lies farther than twice that plus epsilon
+// (BOUNDS_FLAT_GROUND): the hit lies farther than twice that plus its
+// height above the plane (under epsilon, or more for a ray out of steps)
 // from the sphere settings.boundsCenter, boundsRadius, which holds every
-// other surface. Each point within reach is then more than reach + epsilon
-// from them, and at most that above the plane, so the union reads the
-// plane's y - groundHeight there.
+// other surface. Each point within reach is then farther from them than
+// it is above the plane, so an exact field's union reads the plane's
+// y - groundHeight there. (A field that bounds its distance loosely can
+// read less near the floor, and its samples would have darkened the
+// floor's occlusion; the plane is what is there.)
 SHARED_FN bool onlyGroundWithin(TraceState s, TraceSettings settings, real reach) {
     if ((settings.boundsUse & BOUNDS_FLAT_GROUND) == 0 || s.inside) {
         return false;
     }
     vec3 v = s.hitPoint - settings.boundsCenter;
-    real r = settings.boundsRadius + real(2) * reach + s.hitEpsilon;
+    real height = max(s.hitEpsilon, heightAboveGround(s.hitPoint, settings.groundHeight));
+    real r = settings.boundsRadius + real(2) * reach + height;
     return dot3(v, v) > r * r;
 }
 
@@ -715,11 +719,12 @@ SHARED_FN bool onlyGroundWithin(TraceState s, TraceSettings settings, real reach
 // it takes what the plane's samples would give instead of sampling it. Its
 // four normal samples y_i - groundHeight sum to 4 epsilon (0, 1, 0) (the
 // tetrahedron's vertices sum to 0 and their y's squares to 4), the normal
-// (0, 1, 0) at unit slope, and the lower two are inside: no thin feature.
-// Its occlusion samples along that normal read d + h_i against h_i, no
-// occlusion (the hit's own d within epsilon of 0). A floor far from the
-// scene's objects costs no normal or occlusion samples. (The compiler sets the bit only for a ground without a bump map, whose
-// normal samples would also sum the map's heights.)
+// (0, 1, 0) at unit slope, and the lower two (or the probe) are inside: no
+// thin feature. Its occlusion samples along that normal read d + h_i
+// against h_i: no occlusion where the hit is on or above the plane. A floor
+// far from the scene's objects costs no normal or occlusion samples. (The
+// compiler sets the bit only for a ground without a bump map, whose normal
+// samples would also sum the map's heights.)
 SHARED_FN TraceState skipFlatGround(TraceState s, TraceSettings settings) {
     if (s.phase == PHASE_NORMAL && s.counter == 0 && onlyGroundWithin(s, settings, NORMAL_REACH * s.hitEpsilon)) {
         s.normalSum = vec3(real(0), real(4) * s.hitEpsilon, real(0));
