@@ -256,8 +256,12 @@ void writeSpeedup(std::ostringstream& out, const SweepResult& result) {
         out << "- " << result.backends[b] << ":";
         for (int kind = 0; kind < kKinds; ++kind) {
             const Ratios& r = ratios[b][static_cast<size_t>(kind)];
-            out << (kind == 0 ? " " : "; ") << names[kind] << " (" << r.steps.size()
-                << " scenes): " << format("%.2f", medianOf(r.steps)) << "x fewer steps, "
+            out << (kind == 0 ? " " : "; ") << names[kind];
+            if (r.steps.empty()) {
+                out << ": no scene";  // a median of nothing is no ratio
+                continue;
+            }
+            out << " (" << r.steps.size() << " scenes): " << format("%.2f", medianOf(r.steps)) << "x fewer steps, "
                 << format("%.2f", medianOf(r.evaluations)) << "x fewer evaluations, "
                 << format("%.2f", medianOf(r.time)) << "x faster";
         }
