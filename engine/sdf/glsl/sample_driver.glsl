@@ -79,7 +79,6 @@ SHARED_FN TraceState traceSample(real px, real py, real width, real height) {
     bool finished = false;
     while (!finished && i < limit) {
         for (; i < limit; ++i) {
-            s = skipFlatGround(s, settings);
             Light light = sceneLight(lightIndex(s));
             s = skipClearShadowRay(s, light, settings);
             s = skipEmptyMarch(s, settings);

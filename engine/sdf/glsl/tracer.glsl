@@ -282,6 +282,30 @@ SHARED_FN TraceState finishLight(TraceState s, Light light, TraceSettings settin
     return beginLight(s, settings);
 }
 
+// How far, as a multiple of the hit epsilon, the normal's samples reach from
+// the hit: the tetrahedron's vertices sqrt(3) away, the probe at most
+// 1 + NORMAL_PROBE (advanceNormal).
+const real NORMAL_REACH = real(2);
+
+// Whether the field within `reach` of the hit is the ground plane's alone
+// (BOUNDS_FLAT_GROUND): the hit lies farther than twice that plus its
+// height above the plane (under epsilon, or more for a ray out of steps)
+// from the sphere settings.boundsCenter, boundsRadius, which holds every
+// other surface. Each point within reach is then farther from them than
+// it is above the plane, so an exact field's union reads the plane's
+// y - groundHeight there. (A field that bounds its distance loosely can
+// read less near the floor, and its samples would have darkened the
+// floor's occlusion; the plane is what is there.)
+SHARED_FN bool onlyGroundWithin(TraceState s, TraceSettings settings, real reach) {
+    if ((settings.boundsUse & BOUNDS_FLAT_GROUND) == 0 || s.inside) {
+        return false;
+    }
+    vec3 v = s.hitPoint - settings.boundsCenter;
+    real height = max(s.hitEpsilon, heightAboveGround(s.hitPoint, settings.groundHeight));
+    real r = settings.boundsRadius + real(2) * reach + height;
+    return dot3(v, v) > r * r;
+}
+
 SHARED_FN TraceState beginOcclusion(TraceState s, TraceSettings settings) {
     s.counter = 0;
     s.occlusion = real(0);
@@ -294,7 +318,11 @@ SHARED_FN TraceState beginOcclusion(TraceState s, TraceSettings settings) {
         s.phase = PHASE_DONE;
         return s;
     }
-    if (settings.aoSamples > 0) {
+    // A floor with only the ground within reach (onlyGroundWithin) takes no
+    // samples: along the plane's normal (beginNormal) they would read d + h_i
+    // against h_i, no occlusion where the hit is on or above the plane.
+    real aoReach = max(settings.aoDistance, NORMAL_REACH * s.hitEpsilon);
+    if (settings.aoSamples > 0 && !onlyGroundWithin(s, settings, aoReach)) {
         s.phase = PHASE_AO;
         return s;
     }
@@ -363,7 +391,49 @@ SHARED_FN Sample withGroundStep(TraceState s, vec3 p, Sample field, TraceSetting
     return Sample(field.d, min(field.step, heightAboveGround(p, settings.groundHeight)), field.material);
 }
 
-SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
+// The notes' bump mapping (1.2): with tangents t_u, t_v and the height's
+// derivatives d_u, d_v along them, n' = normalize((t_u + d_u n) x (t_v + d_v n))
+// = normalize(n - d_u t_u - d_v t_v), n minus the height's gradient g in the
+// tangent plane. The four tetrahedron samples sum to about 4 epsilon g, as
+// they do for the field's gradient. Without a bump map (g = 0) the normal is
+// kept bit for bit.
+SHARED_FN vec3 bumpedNormal(vec3 n, vec3 bumpSum, real epsilon) {
+    if (!(dot3(bumpSum, bumpSum) > real(0))) {
+        return n;
+    }
+    vec3 g = bumpSum / (real(4) * epsilon);
+    return normalize3(n - (g - n * dot3(g, n)));
+}
+
+// The normal from the samples' sum, then the material phase.
+SHARED_FN TraceState beginMaterial(TraceState s) {
+    s.normal = normalize3(s.normalSum);
+    // The samples sum to about 4 epsilon grad d (advanceNormal). A field
+    // steeper than the distance keeps the offsets as they are: they are
+    // already clear of the surface, and a shorter one is not. (At epsilon 0,
+    // the eye on a surface in pixel mode, there is nothing to scale.)
+    real unitSlopeSum = real(4) * s.hitEpsilon;
+    real sum = length3(s.normalSum);
+    s.offsetScale = sum >= unitSlopeSum ? real(1) : unitSlopeSum / max(sum, unitSlopeSum * SURFACE_SLOPE_FLOOR);
+    // with an image bump map every bump map is differentiated over the
+    // material phase's wider samples (advanceMaterial), the procedural ones too
+    s.shadingNormal = s.materialSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
+    s.phase = PHASE_MATERIAL;
+    s.counter = HIT_MATERIAL_SAMPLE + 1 - s.materialSamples;
+    s.bumpSum = vec3(real(0));
+    return s;
+}
+
+// A hit's normal phase. A floor with only the ground within its samples'
+// reach (onlyGroundWithin) takes what they would give without taking them:
+// the four samples y_i - groundHeight sum to 4 epsilon (0, 1, 0) (the
+// tetrahedron's vertices sum to 0 and their y's squares to 4), the normal
+// (0, 1, 0) at unit slope, and the lower two (or the probe) are inside: no
+// thin feature. A floor far from the scene's objects costs no normal or
+// occlusion samples (beginOcclusion). (The compiler sets the bit only for a
+// ground without a bump map, whose normal samples would also sum the map's
+// heights.)
+SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon, TraceSettings settings) {
     s.hit = true;
     s.hitPoint = s.rayOrigin + s.rayDirection * s.t;
     s.hitEpsilon = epsilon;
@@ -373,6 +443,10 @@ SHARED_FN TraceState beginNormal(TraceState s, Sample field, real epsilon) {
     s.bumpSum = vec3(real(0));
     s.lastDistance = field.d;  // the least distance at and around the hit: advanceNormal reads it
     s.occlusion = field.d;
+    if (onlyGroundWithin(s, settings, NORMAL_REACH * epsilon)) {
+        s.normalSum = vec3(real(0), real(4) * epsilon, real(0));
+        return beginMaterial(s);
+    }
     return s;
 }
 
@@ -503,7 +577,7 @@ SHARED_FN TraceState advanceMarch(TraceState s, Sample field, TraceSettings sett
     }
     if (field.d < epsilon ||
         (s.steps >= settings.maxSteps && convergesWithin(s.t, s.lastDistance, stepped, settings))) {
-        return beginNormal(s, field, epsilon);
+        return beginNormal(s, field, epsilon, settings);
     }
     // the safe step, and at least a fraction of epsilon so the march never stalls
     real radius = max(stepped.step, real(0.25) * epsilon);
@@ -546,7 +620,7 @@ SHARED_FN TraceState advanceEnter(TraceState s, Sample field, TraceSettings sett
     real epsilon = rayEpsilon(s, settings);
     real depth = ENTER_DEPTH * epsilon;
     if (field.d < -depth) {
-        return beginNormal(s, field, epsilon);
+        return beginNormal(s, field, epsilon, settings);
     }
     s.steps = s.steps + 1;
     if (s.marchStep > real(0)) {
@@ -567,39 +641,6 @@ SHARED_FN TraceState advanceEnter(TraceState s, Sample field, TraceSettings sett
         s.marchStep = real(0);
     }
     return endMarchIfSpent(s, settings);
-}
-
-// The notes' bump mapping (1.2): with tangents t_u, t_v and the height's
-// derivatives d_u, d_v along them, n' = normalize((t_u + d_u n) x (t_v + d_v n))
-// = normalize(n - d_u t_u - d_v t_v), n minus the height's gradient g in the
-// tangent plane. The four tetrahedron samples sum to about 4 epsilon g, as
-// they do for the field's gradient. Without a bump map (g = 0) the normal is
-// kept bit for bit.
-SHARED_FN vec3 bumpedNormal(vec3 n, vec3 bumpSum, real epsilon) {
-    if (!(dot3(bumpSum, bumpSum) > real(0))) {
-        return n;
-    }
-    vec3 g = bumpSum / (real(4) * epsilon);
-    return normalize3(n - (g - n * dot3(g, n)));
-}
-
-// The normal from the samples' sum, then the material phase.
-SHARED_FN TraceState beginMaterial(TraceState s) {
-    s.normal = normalize3(s.normalSum);
-    // The samples sum to about 4 epsilon grad d (advanceNormal). A field
-    // steeper than the distance keeps the offsets as they are: they are
-    // already clear of the surface, and a shorter one is not. (At epsilon 0,
-    // the eye on a surface in pixel mode, there is nothing to scale.)
-    real unitSlopeSum = real(4) * s.hitEpsilon;
-    real sum = length3(s.normalSum);
-    s.offsetScale = sum >= unitSlopeSum ? real(1) : unitSlopeSum / max(sum, unitSlopeSum * SURFACE_SLOPE_FLOOR);
-    // with an image bump map every bump map is differentiated over the
-    // material phase's wider samples (advanceMaterial), the procedural ones too
-    s.shadingNormal = s.materialSamples > 1 ? s.normal : bumpedNormal(s.normal, s.bumpSum, s.hitEpsilon);
-    s.phase = PHASE_MATERIAL;
-    s.counter = HIT_MATERIAL_SAMPLE + 1 - s.materialSamples;
-    s.bumpSum = vec3(real(0));
-    return s;
 }
 
 // A hit none of whose samples is inside is on a feature thinner than
@@ -689,52 +730,6 @@ SHARED_FN TraceState advanceOcclusion(TraceState s, Sample field, TraceSettings 
     }
     s.ao = saturate(real(1) - s.occlusion / settings.aoDistance);
     return beginShading(s, settings);
-}
-
-// How far, as a multiple of the hit epsilon, the normal's samples reach from
-// the hit: the tetrahedron's vertices sqrt(3) away, the probe at most
-// 1 + NORMAL_PROBE (advanceNormal).
-const real NORMAL_REACH = real(2);
-
-// Whether the field within `reach` of the hit is the ground plane's alone
-// (BOUNDS_FLAT_GROUND): the hit lies farther than twice that plus its
-// height above the plane (under epsilon, or more for a ray out of steps)
-// from the sphere settings.boundsCenter, boundsRadius, which holds every
-// other surface. Each point within reach is then farther from them than
-// it is above the plane, so an exact field's union reads the plane's
-// y - groundHeight there. (A field that bounds its distance loosely can
-// read less near the floor, and its samples would have darkened the
-// floor's occlusion; the plane is what is there.)
-SHARED_FN bool onlyGroundWithin(TraceState s, TraceSettings settings, real reach) {
-    if ((settings.boundsUse & BOUNDS_FLAT_GROUND) == 0 || s.inside) {
-        return false;
-    }
-    vec3 v = s.hitPoint - settings.boundsCenter;
-    real height = max(s.hitEpsilon, heightAboveGround(s.hitPoint, settings.groundHeight));
-    real r = settings.boundsRadius + real(2) * reach + height;
-    return dot3(v, v) > r * r;
-}
-
-// The driver asks before each evaluation: a hit with only the ground around
-// it takes what the plane's samples would give instead of sampling it. Its
-// four normal samples y_i - groundHeight sum to 4 epsilon (0, 1, 0) (the
-// tetrahedron's vertices sum to 0 and their y's squares to 4), the normal
-// (0, 1, 0) at unit slope, and the lower two (or the probe) are inside: no
-// thin feature. Its occlusion samples along that normal read d + h_i
-// against h_i: no occlusion where the hit is on or above the plane. A floor
-// far from the scene's objects costs no normal or occlusion samples. (The
-// compiler sets the bit only for a ground without a bump map, whose normal
-// samples would also sum the map's heights.)
-SHARED_FN TraceState skipFlatGround(TraceState s, TraceSettings settings) {
-    if (s.phase == PHASE_NORMAL && s.counter == 0 && onlyGroundWithin(s, settings, NORMAL_REACH * s.hitEpsilon)) {
-        s.normalSum = vec3(real(0), real(4) * s.hitEpsilon, real(0));
-        return beginMaterial(s);
-    }
-    real aoReach = max(settings.aoDistance, NORMAL_REACH * s.hitEpsilon);  // its normal is the plane's too
-    if (s.phase == PHASE_AO && s.counter == 0 && onlyGroundWithin(s, settings, aoReach)) {
-        return beginShading(s, settings);  // beginOcclusion left ao at 1
-    }
-    return s;
 }
 
 // The penumbra estimate k h / t at the ray's closest approach to the occluder
