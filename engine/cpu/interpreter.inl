@@ -49,6 +49,7 @@ inline auto withSlots(const vec4* q, F f) {
 struct Texels {
     const program::ResolvedImages* images = nullptr;  // null: no images (picking, point queries)
     real textureStretch = real(1);  // the footprint factor of image textures, 0: no colour needed (sample_driver.glsl)
+    vec4 footprintShift = vec4(real(0));  // footprint_point.glsl's, set by the driver; w = 0: none
 
     vec4 T(int i) const {
         if (images == nullptr || i < 0) return vec4(real(0));
@@ -64,6 +65,7 @@ struct Texels {
         return vec4(real(0));
     }
 
+#include "sdf/glsl/footprint_point.glsl"
 #include "sdf/glsl/mipmap_lookup.glsl"
 #include "sdf/glsl/texture_lookup.glsl"
 };
@@ -109,7 +111,8 @@ struct Registers {
     vec3* points;
     Samples samples;
     Scratch& scratch;
-    Texels texels;  // a pointer's worth: the shared functions are not const members
+    Texels texels;  // a copy: the shared functions are not const members
+    vec3 footprint;  // the point footprints are measured from, footprintPoint(P[0])
 };
 
 // One function per operand class (program/opcodes.h), so each opcode's wiring
@@ -125,8 +128,9 @@ inline void runShape(F fn, const program::Instruction& in, const vec4* q, R& r) 
 }
 template <int Slots, typename F, typename R>
 inline void runShapeSample(F fn, const program::Instruction& in, const vec4* q, R& r) {
-    r.samples.set(in.dst, withSlots<Slots>(
-                              q, [&](auto... s) { return fn(r.points[in.a], s..., r.samples.material(in.material)); }));
+    r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
+                      return fn(r.points[in.a], r.footprint, s..., r.samples.material(in.material));
+                  }));
 }
 template <int Slots, typename F, typename R>
 inline void runFormulaShape(F fn, const program::Instruction& in, const vec4*, R& r) {
@@ -161,13 +165,13 @@ inline void runPost(F fn, const program::Instruction& in, const vec4* q, R& r) {
 template <int Slots, typename F, typename R>
 inline void runTexture(F fn, const program::Instruction& in, const vec4* q, R& r) {
     r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
-                      return fn(r.samples.get(in.a), r.points[in.b], r.points[0], s...);
+                      return fn(r.samples.get(in.a), r.points[in.b], r.footprint, s...);
                   }));
 }
 template <int Slots, typename F, typename R>
 inline void runImageTexture(F fn, const program::Instruction& in, const vec4* q, R& r) {
     r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
-                      return fn(r.texels, r.samples.get(in.a), r.points[in.b], r.points[0], s...);
+                      return fn(r.texels, r.samples.get(in.a), r.points[in.b], r.footprint, s...);
                   }));
 }
 template <int Slots, typename F, typename R>
@@ -175,7 +179,7 @@ inline void runFormulaImageTexture(F fn, const program::Instruction& in, const v
     std::span<const real> v = r.scratch.formula(in.variant, r.points[in.b]);
     vec4 value(v[0], v[1], v[2], v[3]);
     r.samples.set(in.dst, withSlots<Slots>(q, [&](auto... s) {
-                      return fn(r.texels, r.samples.get(in.a), r.points[in.b], r.points[0], value, s...);
+                      return fn(r.texels, r.samples.get(in.a), r.points[in.b], r.footprint, value, s...);
                   }));
 }
 template <int Slots, typename F, typename R>
@@ -189,8 +193,9 @@ inline void runConstant(F fn, const program::Instruction& in, const vec4*, R& r)
 template <typename Samples>
 inline Sample runCodeOn(Samples samples, std::span<const program::Instruction> code, int result, const vec4* params,
                         Scratch& scratch, vec3 point, const Texels& texels) {
-    Registers<Samples> r{scratch.points.data(), samples, scratch, texels};
+    Registers<Samples> r{scratch.points.data(), samples, scratch, texels, vec3(real(0))};
     r.points[0] = point;
+    r.footprint = r.texels.footprintPoint(point);
     for (const program::Instruction& in : code) {
         const vec4* q = in.param >= 0 ? params + in.param : nullptr;
         switch (in.op) {
@@ -263,6 +268,7 @@ struct SampleDriver : Texels {
     bool imageTextures() const { return !program.textureFiles.empty(); }
     int materialSamplesPerHit() const { return program.materialSamplesPerHit(); }
     void setTextureStretch(real k) { textureStretch = k; }
+    void setFootprintShift(vec4 shift) { footprintShift = shift; }
     void setMaterialReads(int reads) { withMaterial = !distanceOnlyAllowed || (reads & sceneMaterialReads) != 0; }
 
 #include "sdf/glsl/environment_lookup.glsl"

@@ -35,10 +35,14 @@ uniform samplerBuffer uTexels;
 vec4 T(int i) { return texelFetch(uTexels, i); }
 )";
 constexpr std::string_view kNoTexels = "vec4 T(int i) { return vec4(0.0); }\n";
-// The footprint factor of image textures (0: no colour needed), set by the driver (sample_driver.glsl).
-constexpr std::string_view kTextureStretch = R"(
+// Set by the driver (sample_driver.glsl) before each evaluation: the footprint
+// factor of image textures (0: no colour needed) and the shift of the point
+// footprints are measured from (footprint_point.glsl; w = 0: none).
+constexpr std::string_view kFootprintGlobals = R"(
 float textureStretch = 1.0;
 void setTextureStretch(float k) { textureStretch = k; }
+vec4 footprintShift = vec4(0.0);
+void setFootprintShift(vec4 shift) { footprintShift = shift; }
 )";
 
 // The per-pass uniforms and the outputs; names match gl_renderer.cpp.
@@ -89,6 +93,7 @@ void emitInstruction(std::ostringstream& out, const Instruction& in, int paramSt
     const program::OpcodeInfo& info = opcodeInfo(in.op);
     std::string fn(info.function);
     std::string material = "M(" + slotExpression(in.material, materialStride) + ")";
+    std::string footprint = "footprintPoint(" + point(0) + ")";
     auto slots = [&](const Instruction& i) { return sdfwb::gl::slots(i, paramStride); };
     out << "    ";
     switch (info.opClass) {
@@ -98,7 +103,8 @@ void emitInstruction(std::ostringstream& out, const Instruction& in, int paramSt
             << ");\n";
         break;
     case OpClass::ShapeSample:
-        out << sample(in.dst) << " = " << fn << "(" << point(in.a) << slots(in) << ", " << material << ");\n";
+        out << sample(in.dst) << " = " << fn << "(" << point(in.a) << ", " << footprint << slots(in) << ", " << material
+            << ");\n";
         break;
     case OpClass::FormulaShape:
         out << sample(in.dst) << " = shapeSample(" << fn << "(" << formulaName(in.variant) << "(" << point(in.a)
@@ -118,11 +124,11 @@ void emitInstruction(std::ostringstream& out, const Instruction& in, int paramSt
         break;
     case OpClass::Texture:
     case OpClass::ImageTexture:
-        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << point(0)
+        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << footprint
             << slots(in) << ");\n";
         break;
     case OpClass::FormulaImageTexture:
-        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << point(0) << ", "
+        out << sample(in.dst) << " = " << fn << "(" << sample(in.a) << ", " << point(in.b) << ", " << footprint << ", "
             << formulaName(in.variant) << "(" << point(in.b) << ")" << slots(in) << ");\n";
         break;
     case OpClass::Constant: out << sample(in.dst) << " = " << fn << "(M(MATERIAL_SLOT));\n"; break;
@@ -143,7 +149,7 @@ void main() {
 std::string_view parameterAccessSource() { return kParameters; }
 
 std::string textureAccessSource(bool texels) {
-    return std::string(texels ? kTexels : kNoTexels) + std::string(kTextureStretch) +
+    return std::string(texels ? kTexels : kNoTexels) + std::string(kFootprintGlobals) +
            std::string(sdf::glslTextureLookup());
 }
 

@@ -11,19 +11,22 @@
 namespace sdfwb::program {
 
 // How an instruction's operands and result are wired; the generator and the
-// interpreter each have one case per class, never one per opcode.
+// interpreter each have one case per class, never one per opcode. F is
+// footprintPoint(P[0]), the point footprints are measured from: the march
+// point (the eye at 0) unfolded along the ray's path from the eye
+// (sdf/glsl/footprint_point.glsl).
 enum class OpClass {
     Point,                // P[dst] = f(P[a], slots)
     Shape,                // S[dst] = shapeSample(f(P[a], slots), material)
-    ShapeSample,          // S[dst] = f(P[a], slots, material)
+    ShapeSample,          // S[dst] = f(P[a], F, slots, material)
     FormulaShape,         // S[dst] = shapeSample(f(formula value at P[a]), material)
     FormulaSample,        // S[dst] = f(P[a], formula value and gradient at P[a], slots, material)
     Combine,              // S[dst] = f(S[a], S[b])
     SmoothCombine,        // S[dst] = f(S[a], S[b], slots, variant)
     Post,                 // S[dst] = f(S[a], P[b], slots)
-    Texture,              // S[dst] = f(S[a], P[b], P[0], slots): P[0] is the march point, the eye at 0
+    Texture,              // S[dst] = f(S[a], P[b], F, slots)
     ImageTexture,         // as Texture, and f reads the backend's texel buffer (sdf/glsl/texture_lookup.glsl)
-    FormulaImageTexture,  // S[dst] = f(S[a], P[b], P[0], formula value and gradient at P[b], slots), reads texels
+    FormulaImageTexture,  // S[dst] = f(S[a], P[b], F, formula value and gradient at P[b], slots), reads texels
     Constant,             // S[dst] = f(default material): "nothing here"
 };
 

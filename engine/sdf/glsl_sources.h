@@ -19,9 +19,10 @@ std::string_view glslLibrary();
 // generated map() and P() it calls.
 std::string_view glslSampleDriver();
 
-// The mipmap sampler and the image textures that use it
-// (sdf/glsl/mipmap_lookup.glsl, texture_lookup.glsl), pasted after the
-// backend's texel accessor T(i) and before the generated map() that calls them.
+// The footprint point, the mipmap sampler and the image textures that use it
+// (sdf/glsl/footprint_point.glsl, mipmap_lookup.glsl, texture_lookup.glsl),
+// pasted after the backend's texel accessor T(i) and footprint globals
+// (textureStretch, footprintShift) and before the generated map() that calls them.
 std::string_view glslTextureLookup();
 
 // The environment map's sampler (sdf/glsl/environment_lookup.glsl), pasted

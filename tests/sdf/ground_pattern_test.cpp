@@ -85,7 +85,7 @@ TEST(GroundPattern, RowTowardsTheHorizonMatchesSupersampling) {
         auto diffuseAt = [&](double sx, double sy, vec4 q) {
             vec3 direction(sx * footprintPerDistance, -std::tan(2 * M_PI / 180) + sy * footprintPerDistance, -1.0);
             vec3 p = direction * (eyeHeight / -direction.y);
-            return instGround(p, q, q1, q2, base).material.diffuse.x;
+            return instGround(p, p, q, q1, q2, base).material.diffuse.x;
         };
         double filteredError = 0, pointError = 0, worstFiltered = 0, centralError = 0, centralPointError = 0;
         const int n = 16;

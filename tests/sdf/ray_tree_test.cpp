@@ -92,6 +92,7 @@ struct AnalyticDriver {
     bool imageTextures() const { return false; }
     int materialSamplesPerHit() const { return 1; }
     void setTextureStretch(real) {}
+    void setFootprintShift(vec4) {}  // its fields have no patterns
     void setMaterialReads(int r) { reads = r; }
     vec4 T(int i) const { return texels.at(static_cast<size_t>(i)); }
 

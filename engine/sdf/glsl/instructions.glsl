@@ -80,23 +80,23 @@ SHARED_FN real groundSafeStep(real d, bool alongRay) { return d > real(0) && alo
 
 // The ground plane y = height, in march coordinates: q0 = (height - eye.y,
 // pattern, footprint per distance, 1 when the march takes it along the ray),
-// q1 = (eye, cell size), q2 = (second colour, line width). March coordinates put the eye at 0, so p is also the
-// primary ray's direction times its distance: a sample's footprint, a disc
-// of diameter w = q0.z |p| across the ray, lands on the plane as an ellipse
-// whose extent along x is w sqrt(1 + (p.x / p.y)^2) (and along z likewise),
-// long towards the horizon. (A reflected ray's footprint is wider than its
-// distance from the eye gives: the ground seen in a mirror is filtered less.)
+// q1 = (eye, cell size), q2 = (second colour, line width). The footprint
+// point f (footprint_point.glsl) is the ray's direction times the length of
+// its path from the eye: a sample's footprint, a disc of diameter
+// w = q0.z |f| across the ray, lands on the plane as an ellipse whose extent
+// along x is w sqrt(1 + (f.x / f.y)^2) (and along z likewise), long towards
+// the horizon.
 // Taken along the ray, its safe step above the plane is GROUND_CLEAR_STEP,
 // which never limits the union it ends: the march takes the plane's step
 // along the ray instead (tracer.glsl's groundAhead) and the other phases its
 // distance (withGroundStep), the scene's other surfaces keeping theirs.
-SHARED_FN Sample instGround(vec3 p, vec4 q0, vec4 q1, vec4 q2, Material base) {
+SHARED_FN Sample instGround(vec3 p, vec3 f, vec4 q0, vec4 q1, vec4 q2, Material base) {
     real d = heightAboveGround(p, q0.x);
-    real height = abs(p.y);
-    real w = q0.z * length3(p);
+    real height = abs(f.y);
+    real w = q0.z * length3(f);
     vec2 footprint = vec2(PATTERN_MAX_FOOTPRINT * q1.w);
     if (height > real(0)) {
-        footprint = vec2(w * sqrt(p.y * p.y + p.x * p.x) / height, w * sqrt(p.y * p.y + p.z * p.z) / height);
+        footprint = vec2(w * sqrt(f.y * f.y + f.x * f.x) / height, w * sqrt(f.y * f.y + f.z * f.z) / height);
     }
     Material m = groundMaterial(base, p + xyz(q1), int(q0.y), q1.w, q2.w, xyz(q2), footprint);
     return Sample(d, groundSafeStep(d, q0.w > real(0)), m);
@@ -135,23 +135,24 @@ SHARED_FN Sample instDisplace(Sample s, vec3 p, vec4 q0) {
 // Twist and bend: only the step shrinks (q0.x = 1 / Lipschitz bound).
 SHARED_FN Sample instStepScale(Sample s, vec3 p, vec4 q0) { return withDistances(s, s.d, s.step * q0.x); }
 
-// ---- Texture: S[dst] = f(S[a], P[b], P[0], slots) ----
+// ---- Texture: S[dst] = f(S[a], P[b], F, slots) ----
 // A primitive's sample with its material textured at its object-space point
-// p; the eye is at march point 0, so |eye| is the sample's distance from it.
+// p; |f| is the sample's distance from the eye along the ray's path (f the
+// footprint point, footprint_point.glsl).
 // q0 = (pattern, 1 / scale, footprint per distance in texture units,
 // 1 when it changes the specular colour too), q1 = (texture colour, 0).
-SHARED_FN Sample instTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1) {
-    real w = q0.z * length3(eye);
+SHARED_FN Sample instTexture(Sample s, vec3 p, vec3 f, vec4 q0, vec4 q1) {
+    real w = q0.z * length3(f);
     return Sample(s.d, s.step, texturedMaterial(s.material, int(q0.x), p * q0.y, w, xyz(q1), q0.w > real(0)));
 }
 
-// ---- Bump: S[dst] = f(S[a], P[b], P[0], slots) ----
+// ---- Bump: S[dst] = f(S[a], P[b], F, slots) ----
 // A primitive's sample carrying its bump map's height at its object-space
 // point p (texture.glsl), which the tracer differentiates for the shading
 // normal. q0 = (pattern, 1 / scale, footprint per distance in bump units, depth).
-SHARED_FN Sample instBump(Sample s, vec3 p, vec3 eye, vec4 q0) {
+SHARED_FN Sample instBump(Sample s, vec3 p, vec3 f, vec4 q0) {
     Material m = s.material;
-    m.bump = q0.w * bumpHeight(int(q0.x), p * q0.y, q0.z * length3(eye));
+    m.bump = q0.w * bumpHeight(int(q0.x), p * q0.y, q0.z * length3(f));
     return Sample(s.d, s.step, m);
 }
 

@@ -90,6 +90,19 @@ SHARED_FN TraceState traceBeginNode(RayNode node) {
     return traceBeginRay(Ray(node.origin, node.direction), node.depth, node.inside, node.pathLength);
 }
 
+// What the ray's points are shifted by for their footprints
+// (footprint_point.glsl): its point o + t d lies pathLength + t from the eye
+// along the path, so it is measured at d (pathLength + t), the point plus
+// d pathLength - o. None for a primary ray, whose points are measured as
+// they are.
+SHARED_FN vec4 footprintShiftOf(TraceState s) {
+    if (s.depth == 0) {
+        return vec4(real(0));
+    }
+    vec3 shift = s.rayDirection * s.pathLength - s.rayOrigin;
+    return vec4(shift.x, shift.y, shift.z, real(1));
+}
+
 // A ray worth tracing: within the depth, and some channel at least the cutoff.
 SHARED_FN bool rayWorthTracing(RayNode node, TraceSettings settings) {
     real heaviest = max(node.weight.x, max(node.weight.y, node.weight.z));

@@ -10,6 +10,8 @@
 // materialSamplesPerHit(), how many evaluations the material phase takes
 // (tracer.glsl's TraceState), setTextureStretch(k), which widens the
 // footprint of the next evaluation's image textures (texture_lookup.glsl),
+// setFootprintShift(v), which unfolds the next evaluation's footprints
+// along the ray's path (footprint_point.glsl),
 // and setMaterialReads(bits), which material fields the next evaluation is
 // read for (traceMaterialReads). GLSL: the generated functions before it;
 // C++: members of the struct this file is included in (cpu/interpreter.inl).
@@ -37,6 +39,9 @@ SHARED_FN Light sceneLight(int index) {
 SHARED_FN void prepareSample(TraceState s) {
     if (imageTextures()) {
         setTextureStretch(textureFootprintStretch(s));
+    }
+    if (secondaryRays()) {
+        setFootprintShift(footprintShiftOf(s));
     }
     setMaterialReads(traceMaterialReads(s));
 }

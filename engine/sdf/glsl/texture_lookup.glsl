@@ -44,13 +44,13 @@ SHARED_FN Sample imageTexturedSample(Sample s, vec3 c, vec4 q0) {
     return Sample(s.d, s.step, m);
 }
 
-// ---- ImageTexture: S[dst] = f(S[a], P[b], P[0], slots) ----
+// ---- ImageTexture: S[dst] = f(S[a], P[b], F, slots) ----
 // A textureStretch of 0: the evaluation's colour is not shaded, nothing to look up.
-SHARED_FN Sample instImageTexture(Sample s, vec3 p, vec3 eye, vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
+SHARED_FN Sample instImageTexture(Sample s, vec3 p, vec3 f, vec4 q0, vec4 q1, vec4 q2, vec4 q3) {
     if (!(textureStretch > real(0))) {
         return s;
     }
-    return imageTexturedSample(s, imageTextureColor(p, length3(eye), q0, q1, q2, q3), q0);
+    return imageTexturedSample(s, imageTextureColor(p, length3(f), q0, q1, q2, q3), q0);
 }
 
 // Triplanar mapping, for primitives without a parametrization (formulas):
@@ -78,13 +78,13 @@ SHARED_FN vec3 triplanarColor(vec3 p, vec3 gradient, real distance, vec4 q0, vec
     return alongX * w.x + alongY * w.y + alongZ * w.z;
 }
 
-// ---- TriplanarTexture: S[dst] = f(S[a], P[b], P[0], formula value and gradient at P[b], slots) ----
+// ---- TriplanarTexture: S[dst] = f(S[a], P[b], F, formula value and gradient at P[b], slots) ----
 // q0 = (tiles per object unit, tiles per scene unit of footprint at distance 1,
 // role, bump depth) as ImageTexture's,
 // q1 = (first texel, side, levels, 0) of the image, filled in like ImageTexture's q3.
-SHARED_FN Sample instTriplanarTexture(Sample s, vec3 p, vec3 eye, vec4 v, vec4 q0, vec4 q1) {
+SHARED_FN Sample instTriplanarTexture(Sample s, vec3 p, vec3 f, vec4 v, vec4 q0, vec4 q1) {
     if (!(textureStretch > real(0))) {
         return s;
     }
-    return imageTexturedSample(s, triplanarColor(p, vec3(v.y, v.z, v.w), length3(eye), q0, q1), q0);
+    return imageTexturedSample(s, triplanarColor(p, vec3(v.y, v.z, v.w), length3(f), q0, q1), q0);
 }

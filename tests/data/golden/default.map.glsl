@@ -10,7 +10,7 @@ Sample map(vec3 p) {
     p2 = instTranslate(p1, P(57));
     s1 = shapeSample(instBox(p2, P(58)), M(40));
     s0 = instUnion(s0, s1);
-    s1 = instGround(p0, P(59), P(60), P(61), M(46));
+    s1 = instGround(p0, footprintPoint(p0), P(59), P(60), P(61), M(46));
     s0 = instUnion(s0, s1);
     return s0;
 }
