@@ -19,17 +19,42 @@ std::string lowerExtension(const std::filesystem::path& path) {
     return ext;
 }
 
+// Opens `path` with the reader of its extension alone, or returns null with
+// the reason. OpenImageIO's own open() tries every reader it has when that one
+// fails (camera raw, FITS, DPX and more): decoders nobody meant to run on the
+// file, and a wide surface for a hostile one.
+std::unique_ptr<OIIO::ImageInput> openByExtension(const std::filesystem::path& path, std::string& reason) {
+    const std::string extension = lowerExtension(path);
+    // the extension without its dot names a reader; with it, or as a file's
+    // name, OpenImageIO would look for a file and probe it
+    auto in = extension.size() > 1 ? OIIO::ImageInput::create(extension.substr(1)) : nullptr;
+    if (!in) {
+        OIIO::geterror();  // OpenImageIO's message names a plugin search, not the file
+        reason = extension.empty() ? "a file without an extension has no image reader"
+                                   : "no image reader for '" + extension + "' files";
+        return nullptr;
+    }
+    OIIO::ImageSpec spec;
+    if (!in->open(path.string(), spec)) {
+        reason = in->geterror();
+        if (reason.empty()) reason = "not a " + std::string(in->format_name()) + " file";
+        return nullptr;
+    }
+    return in;
+}
+
 // Some writers report success on a full disk and leave a truncated file (the
 // PNG writer does): only a file that decodes completely may replace the old one.
 void checkReadsBack(const std::filesystem::path& temporary, const std::filesystem::path& path, const Image& image) {
-    auto in = OIIO::ImageInput::open(temporary.string());
+    std::string reason;
+    auto in = openByExtension(temporary, reason);
     bool ok = in && in->spec().width == image.width && in->spec().height == image.height;
     if (ok) {
         std::vector<float> pixels(image.pixelCount() * static_cast<std::size_t>(in->spec().nchannels));
         ok = in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
     }
     if (!ok) {
-        std::string reason = in ? in->geterror() : OIIO::geterror();
+        if (in) reason = in->geterror();
         throw std::runtime_error("cannot write " + path.string() + ": the written file does not read back" +
                                  (reason.empty() ? std::string(" (is the disk full?)") : ": " + reason));
     }
@@ -108,9 +133,10 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelV
     if (std::string problem = exrHeaderProblem(path); !problem.empty()) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + problem);
     }
-    auto in = OIIO::ImageInput::open(path.string());
+    std::string reason;
+    auto in = openByExtension(path, reason);
     if (!in) {
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+        throw std::runtime_error("cannot read image " + path.string() + ": " + reason);
     }
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels <= 0 || spec.width <= 0 || spec.height <= 0 ||

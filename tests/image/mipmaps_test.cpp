@@ -102,6 +102,30 @@ TEST_F(MipmappedImagesTest, FilesThatCannotBeReadAreNamedInOneLine) {
     }
 }
 
+// A file is read by the reader of its extension alone: a TIFF named .png is
+// refused by the PNG reader instead of being handed to every reader
+// OpenImageIO has (camera raw, FITS, DPX...) until one takes it.
+TEST_F(MipmappedImagesTest, OnlyTheReaderOfTheFilesExtensionReadsIt) {
+    const std::filesystem::path tiff = redOverBlue("sky.tif", 4, 4);
+    EXPECT_EQ(readImage(tiff).width, 4);
+    const std::filesystem::path disguised = folder / "sky.png";
+    std::filesystem::copy_file(tiff, disguised);
+    const std::filesystem::path unknown = folder / "sky.xyz";
+    std::filesystem::copy_file(tiff, unknown);
+    for (const auto& [path, reason] :
+         {std::pair{disguised, std::string("PNG")}, std::pair{unknown, std::string("'.xyz'")}}) {
+        try {
+            readImage(path);
+            ADD_FAILURE() << path;
+        } catch (const std::runtime_error& error) {
+            std::string message = error.what();
+            EXPECT_EQ(message.rfind("cannot read image " + path.string() + ": ", 0), 0u) << message;
+            EXPECT_NE(message.find(reason), std::string::npos) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        }
+    }
+}
+
 TEST_F(MipmappedImagesTest, AnImageOverThePixelLimitIsRefusedBeforeItsPixelsAreRead) {
     std::filesystem::path big = redOverBlue("big.png", 64, 64);
     try {
