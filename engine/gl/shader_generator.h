@@ -19,8 +19,9 @@ std::string_view vertexShaderSource();
 std::string_view parameterAccessSource();
 
 // The scene images' texel accessor T(i) (the uTexels buffer, or zero when
-// `texels` is false), the image textures' footprint factor and the shared
-// texture lookup, which map() calls; after parameterAccessSource().
+// `texels` is false), the footprint globals the driver sets (the image
+// textures' factor, the footprint point's shift) and the shared footprint
+// point and texture lookup, which map() calls; after parameterAccessSource().
 std::string textureAccessSource(bool texels);
 
 // The program's formulas, its map(vec3 p): straight-line code over its

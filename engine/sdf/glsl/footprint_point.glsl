@@ -8,8 +8,9 @@
 // one straight line from the eye along the ray's direction (what a flat
 // mirror shows is its virtual image), the march point plus footprintShift.
 // footprintShift is the backend's, set by the driver before each evaluation
-// (sample_driver.glsl, tracer.glsl's footprintShiftOf); w = 0: no shift.
-// Curved mirrors and lenses widen a footprint further; that is not modelled.
+// (sample_driver.glsl, ray_tree.glsl's footprintShiftOf); w = 0: no shift.
+// Exact for flat mirrors. Curved mirrors and refracting faces (even flat
+// ones) widen or narrow a footprint further; that is not modelled.
 SHARED_FN vec3 footprintPoint(vec3 p) {
     if (footprintShift.w > real(0)) {
         return p + xyz(footprintShift);

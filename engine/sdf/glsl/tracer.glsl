@@ -56,7 +56,7 @@ struct TraceState {
     vec3 color;
     int depth;          // bounces before this ray: 0 for a primary ray (ray_tree.glsl)
     bool inside;        // the ray travels inside a solid: it marches on the negated field
-    real pathLength;    // distance from the eye to this ray's origin, for the footprint epsilon
+    real pathLength;    // distance from the eye to this ray's origin: footprints (epsilon, textures)
     real enterSlope;    // PHASE_ENTER: the steepest rate of change of the field along the ray so far
     int materialSamples; // evaluations of PHASE_MATERIAL per hit (set by the driver): 1 for the hit's
                          // material, 5 with an image bump map (four around the hit first)
