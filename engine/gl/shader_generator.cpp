@@ -1,12 +1,16 @@
 #include "gl/shader_generator.h"
 
+#include <algorithm>
+#include <cctype>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "expr/glsl.h"
 #include "gl/fold_run.h"
 #include "gl/program_size.h"
 #include "prune/prune_grid.h"
+#include "scene/node_kinds.h"
 #include "sdf/glsl_sources.h"
 #include "sdf/shared.h"
 
@@ -246,12 +250,32 @@ std::string generateMapFunction(const program::Program& program) {
     return out.str();
 }
 
+// The variants come from map()'s instructions and the prune grid's outside
+// bound; a variant is part of the shader text, so this follows the structure.
+std::string smoothVariantDefines(const program::Program& program) {
+    std::set<int> used;
+    auto collect = [&](const std::vector<Instruction>& code) {
+        for (const Instruction& in : code) {
+            if (opcodeInfo(in.op).opClass == OpClass::SmoothCombine) used.insert(in.variant);
+        }
+    };
+    collect(program.code);
+    if (findFoldRun(program)) collect(prune::outsideBoundCode(program));
+    std::string defines = "#define SMOOTH_VARIANTS_OF_SCENE\n";
+    for (int variant : used) {
+        std::string name(scene::kSmoothVariantNames[variant]);
+        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
+        defines += "#define SMOOTH_USES_" + name + "\n";
+    }
+    return defines;
+}
+
 std::string generateFragmentShader(const program::Program& program) {
     const bool environmentMap = program.environmentKind != sdf::f32::ENVIRONMENT_COLOR;
     const bool texels = environmentMap || !program.textureFiles.empty();
     std::ostringstream out;
     out << "#version 330 core\n"
-        << sdf::glslPrelude() << sdf::glslLibrary() << kInterface
+        << sdf::glslPrelude() << smoothVariantDefines(program) << sdf::glslLibrary() << kInterface
         << kParameters
         // scenes without images read no texels
         << textureAccessSource(texels) << generateMapFunction(program)

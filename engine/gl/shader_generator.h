@@ -32,6 +32,11 @@ std::string textureAccessSource(bool texels);
 // parameterAccessSource().
 std::string generateMapFunction(const program::Program& program);
 
+// The preprocessor lines that make the shared library compile only the smooth
+// variants the program's smooth booleans use (operators.glsl, smoothMin);
+// between glslPrelude() and glslLibrary().
+std::string smoothVariantDefines(const program::Program& program);
+
 // The fragment shader for `program`; depends only on its structure
 // (program.structureKey()), never on parameter values.
 std::string generateFragmentShader(const program::Program& program);

@@ -352,7 +352,8 @@ protected:
             ConformanceProgram built = conformanceProgram(c, variant);
             const OpClass opClass = program::opcodeInfo(c.op).opClass;
             texels_ = opClass == OpClass::ImageTexture || opClass == OpClass::FormulaImageTexture;
-            std::string source = std::string(sdf::glslPrelude()) + std::string(sdf::glslLibrary()) +
+            std::string source = std::string(sdf::glslPrelude()) + gl::smoothVariantDefines(built.program) +
+                                 std::string(sdf::glslLibrary()) +
                                  std::string(gl::parameterAccessSource()) + gl::textureAccessSource(texels_) +
                                  gl::generateMapFunction(built.program) + std::string(kMain);
             glcontext::FragmentEvaluator evaluator(gl(), source);

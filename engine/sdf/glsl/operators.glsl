@@ -89,16 +89,28 @@ const int SMOOTH_EXPONENTIAL = 1;
 const int SMOOTH_POWER = 2;
 const int SMOOTH_ROOT = 3;
 
+// A shader holds only the variants its scene uses: the GL generator defines
+// SMOOTH_VARIANTS_OF_SCENE and SMOOTH_USES_<NAME> for each variant used
+// (gl/shader_generator.cpp), because Mesa inlines every branch of this
+// dispatch at every call before it folds the constant variant, and the
+// exponential and power branches' exp2 and log2 made each smooth boolean cost
+// about 50 ms of compile time (docs/toolchain-notes.md). C++ compiles them all.
 SHARED_FN Blend smoothMin(int variant, real a, real b, real k, real n) {
+#if !defined(SMOOTH_VARIANTS_OF_SCENE) || defined(SMOOTH_USES_EXPONENTIAL)
     if (variant == SMOOTH_EXPONENTIAL) {
         return sminExponential(a, b, k);
     }
+#endif
+#if !defined(SMOOTH_VARIANTS_OF_SCENE) || defined(SMOOTH_USES_POWER)
     if (variant == SMOOTH_POWER) {
         return sminPower(a, b, k);
     }
+#endif
+#if !defined(SMOOTH_VARIANTS_OF_SCENE) || defined(SMOOTH_USES_ROOT)
     if (variant == SMOOTH_ROOT) {
         return sminRoot(a, b, k);
     }
+#endif
     return sminPolynomial(a, b, k, n);
 }
 
