@@ -1,6 +1,7 @@
 #include "image/image_io.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 #include <OpenImageIO/filesystem.h>
@@ -50,8 +51,8 @@ void checkReadsBack(const std::filesystem::path& temporary, const std::filesyste
     auto in = openByExtension(temporary, reason);
     bool ok = in && in->spec().width == image.width && in->spec().height == image.height;
     if (ok) {
-        std::vector<float> pixels(image.pixelCount() * static_cast<std::size_t>(in->spec().nchannels));
-        ok = in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
+        std::vector<std::byte> stored(in->spec().image_bytes(true));
+        ok = in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::UNKNOWN, stored.data());
     }
     if (!ok) {
         if (in) reason = in->geterror();
@@ -148,21 +149,34 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelV
     }
     Image image(spec.width, spec.height);
     // colour is the first three channels, or the first one (grey, with or
-    // without alpha) for all three; the rest (alpha, extra layers) is not
-    // read, so a file of many channels costs no more memory than RGB
+    // without alpha) for all three
     const int channels = spec.nchannels >= 3 ? 3 : 1;
     const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
     // 16-bit PNGs and TIFFs store the display encoding as 8-bit ones do
     // (OpenImageIO hands them over as fractions of 65535, not decoded)
     const bool displayEncoded = eightBit || spec.format == OIIO::TypeDesc::UINT16;
-    std::vector<float> pixels(image.pixelCount() * static_cast<size_t>(channels));
-    std::vector<std::uint8_t> bytes;
+    // An image of up to four channels of one type is read as stored, every
+    // channel, and converted here: asked for another type or for some of its
+    // channels, OpenImageIO converts through a buffer of about 64 MB per read
+    // whatever the image's size (48 MB for a 256 x 256 RGBA PNG). Others (many
+    // channels, or channels of different types) are read as the first
+    // `channels` in the type wanted, so they cost no more memory than RGB.
+    const bool asStored = spec.nchannels <= 4 && spec.channelformats.empty();
+    const int stride = asStored ? spec.nchannels : channels;
+    const OIIO::TypeDesc wanted = eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+    const std::size_t count = image.pixelCount() * static_cast<std::size_t>(stride);
+    std::vector<float> pixels(eightBit ? 0 : count);
+    std::vector<std::uint8_t> bytes(eightBit ? count : 0);
+    void* const destination = eightBit ? static_cast<void*>(bytes.data()) : static_cast<void*>(pixels.data());
     bool ok = false;
-    if (eightBit) {
-        bytes.resize(pixels.size());
-        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, bytes.data());
+    if (!asStored) {
+        ok = in->read_image(0, 0, 0, channels, wanted, destination);
+    } else if (eightBit) {
+        ok = in->read_image(0, 0, 0, stride, OIIO::TypeDesc::UNKNOWN, destination);
     } else {
-        ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
+        std::vector<std::byte> stored(spec.image_bytes(true));
+        ok = in->read_image(0, 0, 0, stride, OIIO::TypeDesc::UNKNOWN, stored.data()) &&
+             OIIO::convert_pixel_values(spec.format, stored.data(), wanted, destination, static_cast<int>(count));
     }
     if (!ok) {
         throw std::runtime_error("cannot read image " + path.string() + ": " + in->geterror());
@@ -175,7 +189,7 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelV
     };
     for (size_t i = 0; i < image.pixelCount(); ++i) {
         for (int c = 0; c < 3; ++c) {
-            size_t source = i * static_cast<size_t>(channels) + static_cast<size_t>(std::min(c, channels - 1));
+            size_t source = i * static_cast<size_t>(stride) + static_cast<size_t>(std::min(c, channels - 1));
             image.rgb[3 * i + static_cast<size_t>(c)] = value(source);
         }
     }

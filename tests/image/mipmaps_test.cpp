@@ -163,6 +163,60 @@ TEST_F(MipmappedImagesTest, SixteenBitFilesStoreTheDisplayEncodingAsEightBitOnes
               cachedMipmappedImages({eight}, 4, PixelValues::Data)->texels[0].x);
 }
 
+// The reader takes images of up to four channels of one type as stored and
+// converts them itself, others through OpenImageIO's conversion: every layout
+// gives the same colours (as data, so nothing is decoded).
+TEST_F(MipmappedImagesTest, EveryChannelLayoutReadsTheSameColours) {
+    struct Layout {
+        std::string name;
+        int channels;
+        OIIO::TypeDesc format;
+        std::vector<OIIO::TypeDesc> channelFormats;
+        float tolerance;
+    };
+    const std::vector<Layout> layouts = {
+        {"rgba8.png", 4, OIIO::TypeDesc::UINT8, {}, 0},
+        {"grey_alpha8.png", 2, OIIO::TypeDesc::UINT8, {}, 0},
+        {"rgb16.png", 3, OIIO::TypeDesc::UINT16, {}, 1e-6f},
+        {"rgba_half.exr", 4, OIIO::TypeDesc::HALF, {}, 1e-3f},
+        {"rgb_float.tif", 3, OIIO::TypeDesc::FLOAT, {}, 0},
+        {"six_channels.exr", 6, OIIO::TypeDesc::FLOAT, {}, 0},
+        {"mixed.exr",
+         4,
+         OIIO::TypeDesc::FLOAT,
+         {OIIO::TypeDesc::HALF, OIIO::TypeDesc::HALF, OIIO::TypeDesc::HALF, OIIO::TypeDesc::FLOAT},
+         1e-3f},
+    };
+    constexpr int kWidth = 3, kHeight = 2;
+    for (const Layout& layout : layouts) {
+        // multiples of 17 / 255, which 8-bit files hold exactly; an alpha
+        // channel opaque, since PNG stores colour unassociated from it
+        const size_t channels = static_cast<size_t>(layout.channels);
+        std::vector<float> stored(kWidth * kHeight * channels);
+        for (size_t i = 0; i < stored.size(); ++i) {
+            const bool alpha = (channels == 2 || channels == 4) && i % channels == channels - 1;
+            stored[i] = alpha ? 1.0f : static_cast<float>((i * 7 % 16) * 17) / 255.0f;
+        }
+        const std::filesystem::path path = folder / layout.name;
+        auto out = OIIO::ImageOutput::create(path.string());
+        ASSERT_TRUE(out) << layout.name;
+        OIIO::ImageSpec spec(kWidth, kHeight, layout.channels, layout.format);
+        spec.channelformats = layout.channelFormats;
+        ASSERT_TRUE(out->open(path.string(), spec)) << layout.name;
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, stored.data())) << layout.name;
+        out->close();
+        const Image read = readImage(path, kMaxImageFilePixels, PixelValues::Data);
+        ASSERT_EQ(read.width, kWidth);
+        for (size_t pixel = 0; pixel < read.pixelCount(); ++pixel) {
+            for (size_t c = 0; c < 3; ++c) {
+                const size_t channel = channels >= 3 ? c : 0;
+                EXPECT_NEAR(read.rgb[3 * pixel + c], stored[pixel * channels + channel], layout.tolerance)
+                    << layout.name << " pixel " << pixel << " channel " << c;
+            }
+        }
+    }
+}
+
 TEST(EnvironmentPlaceholder, IsAMarkedCheckerboardPerImage) {
     auto placeholder = placeholderImages(6);
     EXPECT_EQ(placeholder->texels.size(), static_cast<size_t>(6 * sdf::f32::mipPyramidTexels(placeholder->side)));
