@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -250,19 +251,18 @@ std::string generateMapFunction(const program::Program& program) {
     return out.str();
 }
 
-// The variants come from map()'s instructions and the prune grid's outside
-// bound; a variant is part of the shader text, so this follows the structure.
+// Every smooth boolean of a shader is one of the program's own instructions
+// (the fold loop repeats them; the prune grid's outside bound adds none), and
+// a variant is part of the shader text, so this follows the structure. The
+// polynomial, the dispatch's fallback, is always compiled.
 std::string smoothVariantDefines(const program::Program& program) {
     std::set<int> used;
-    auto collect = [&](const std::vector<Instruction>& code) {
-        for (const Instruction& in : code) {
-            if (opcodeInfo(in.op).opClass == OpClass::SmoothCombine) used.insert(in.variant);
-        }
-    };
-    collect(program.code);
-    if (findFoldRun(program)) collect(prune::outsideBoundCode(program));
+    for (const Instruction& in : program.code) {
+        if (opcodeInfo(in.op).opClass == OpClass::SmoothCombine) used.insert(in.variant);
+    }
     std::string defines = "#define SMOOTH_VARIANTS_OF_SCENE\n";
     for (int variant : used) {
+        if (variant < 0 || variant >= static_cast<int>(std::size(scene::kSmoothVariantNames))) continue;
         std::string name(scene::kSmoothVariantNames[variant]);
         std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
         defines += "#define SMOOTH_USES_" + name + "\n";

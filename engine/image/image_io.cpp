@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 
 #include <OpenImageIO/filesystem.h>
@@ -161,9 +162,11 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelV
     // whatever the image's size (48 MB for a 256 x 256 RGBA PNG). Others (many
     // channels, or channels of different types) are read as the first
     // `channels` in the type wanted, so they cost no more memory than RGB.
-    const bool asStored = spec.nchannels <= 4 && spec.channelformats.empty();
-    const int stride = asStored ? spec.nchannels : channels;
     const OIIO::TypeDesc wanted = eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+    const std::size_t storedCount = image.pixelCount() * static_cast<std::size_t>(spec.nchannels);
+    const bool asStored = spec.nchannels <= 4 && spec.channelformats.empty() &&
+                          storedCount <= static_cast<std::size_t>(std::numeric_limits<int>::max());
+    const int stride = asStored ? spec.nchannels : channels;
     const std::size_t count = image.pixelCount() * static_cast<std::size_t>(stride);
     std::vector<float> pixels(eightBit ? 0 : count);
     std::vector<std::uint8_t> bytes(eightBit ? count : 0);
@@ -171,9 +174,10 @@ Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelV
     bool ok = false;
     if (!asStored) {
         ok = in->read_image(0, 0, 0, channels, wanted, destination);
-    } else if (eightBit) {
+    } else if (spec.format == wanted) {
         ok = in->read_image(0, 0, 0, stride, OIIO::TypeDesc::UNKNOWN, destination);
     } else {
+        // a second copy, of the stored type, only where the types differ
         std::vector<std::byte> stored(spec.image_bytes(true));
         ok = in->read_image(0, 0, 0, stride, OIIO::TypeDesc::UNKNOWN, stored.data()) &&
              OIIO::convert_pixel_values(spec.format, stored.data(), wanted, destination, static_cast<int>(count));

@@ -204,9 +204,16 @@ TEST_F(MipmappedImagesTest, EveryChannelLayoutReadsTheSameColours) {
         spec.channelformats = layout.channelFormats;
         ASSERT_TRUE(out->open(path.string(), spec)) << layout.name;
         ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, stored.data())) << layout.name;
-        out->close();
+        ASSERT_TRUE(out->close()) << layout.name;
+        // the file holds the layout (channels and their types) the reader is to meet
+        auto in = OIIO::ImageInput::open(path.string());
+        ASSERT_TRUE(in) << layout.name;
+        EXPECT_EQ(in->spec().nchannels, layout.channels) << layout.name;
+        EXPECT_EQ(in->spec().channelformats.size(), layout.channelFormats.size()) << layout.name;
+        in->close();
         const Image read = readImage(path, kMaxImageFilePixels, PixelValues::Data);
         ASSERT_EQ(read.width, kWidth);
+        ASSERT_EQ(read.height, kHeight);
         for (size_t pixel = 0; pixel < read.pixelCount(); ++pixel) {
             for (size_t c = 0; c < 3; ++c) {
                 const size_t channel = channels >= 3 ? c : 0;
