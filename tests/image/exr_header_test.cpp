@@ -51,6 +51,29 @@ TEST_F(ExrHeader, AnAttributeClaimingMoreThanTheFileIsNamedBeforeOpenExrReadsIt)
     }
 }
 
+// OpenEXR reads at most 31 bytes of a name (255 with the long-names flag) and
+// the rest as the next field: a name running on once made it read a string
+// attribute of 1.9 GB from a 1.6 KB file (tests/fuzz/regressions/image).
+TEST_F(ExrHeader, ANameLongerThanOpenExrReadsIsRefused) {
+    const std::string bytes = bytesOf(good);
+    const std::size_t at = bytes.find(std::string("channels\0", 9));
+    ASSERT_NE(at, std::string::npos);
+    const std::string longName = "channels_named_at_greater_length_than_31";
+    std::string renamed = bytes;
+    renamed.replace(at, 8, longName);
+    write(folder / "long_name.exr", renamed);
+    EXPECT_EQ(exrHeaderProblem(folder / "long_name.exr"),
+              "its OpenEXR header has an attribute name or type longer than 31 bytes");
+    // the version field's long-names flag (0x400, byte 5) allows up to 255
+    renamed[5] = static_cast<char>(renamed[5] | 0x04);
+    write(folder / "long_names_flagged.exr", renamed);
+    EXPECT_EQ(exrHeaderProblem(folder / "long_names_flagged.exr"), "");
+    renamed.replace(at, longName.size(), std::string(256, 'n'));
+    write(folder / "too_long_even_flagged.exr", renamed);
+    EXPECT_EQ(exrHeaderProblem(folder / "too_long_even_flagged.exr"),
+              "its OpenEXR header has an attribute name or type longer than 255 bytes");
+}
+
 TEST_F(ExrHeader, AHeaderCutShortIsRefusedAndOtherFormatsAreLeftAlone) {
     write(folder / "cut.exr", bytesOf(good).substr(0, 12));  // inside the first attribute's name
     EXPECT_EQ(exrHeaderProblem(folder / "cut.exr"), "its OpenEXR header is cut short");
