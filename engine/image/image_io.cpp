@@ -10,6 +10,8 @@
 
 #include "image/encoding.h"
 #include "image/exr_header.h"
+#include "image/jpeg_markers.h"
+#include "image/png_chunks.h"
 #include "io/atomic_file.h"
 
 namespace sdfwb::image {
@@ -132,8 +134,8 @@ void stageImage(io::StagedWrites& writes, const std::filesystem::path& path, con
 }
 
 Image readImage(const std::filesystem::path& path, std::size_t maxPixels, PixelValues values) {
-    if (std::string problem = exrHeaderProblem(path); !problem.empty()) {
-        throw std::runtime_error("cannot read image " + path.string() + ": " + problem);
+    for (std::string problem : {exrHeaderProblem(path), pngChunkProblem(path), jpegMarkerProblem(path)}) {
+        if (!problem.empty()) throw std::runtime_error("cannot read image " + path.string() + ": " + problem);
     }
     std::string reason;
     auto in = openByExtension(path, reason);
