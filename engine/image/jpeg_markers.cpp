@@ -10,7 +10,10 @@ namespace {
 
 constexpr unsigned char kMarker = 0xff;
 constexpr unsigned char kStartOfImage = 0xd8;
+constexpr unsigned char kEndOfImage = 0xd9;
 constexpr unsigned char kStartOfScan = 0xda;
+constexpr unsigned char kFirstRestart = 0xd0;  // RST0 to RST7 and SOI carry no length, as TEM
+constexpr unsigned char kTemporary = 0x01;
 constexpr unsigned char kApp13 = 0xed;
 // What OpenImageIO's reader expects before the IPTC records: the Photoshop
 // signature, an 8BIM resource of id 1028, four bytes it skips and the
@@ -51,20 +54,34 @@ std::string iptcProblem(const std::vector<unsigned char>& segment) {
     return "";
 }
 
+// The next marker's code as libjpeg finds it (next_marker in jdmarker.c):
+// bytes up to an 0xFF are skipped, then fill bytes of 0xFF; an 0xFF 0x00 is
+// no marker. -1 at the file's end.
+int nextMarker(std::istream& in) {
+    for (char c; in.get(c);) {
+        if (static_cast<unsigned char>(c) != kMarker) continue;
+        while (in.get(c) && static_cast<unsigned char>(c) == kMarker) {}
+        if (!in) return -1;
+        if (c != 0) return static_cast<unsigned char>(c);
+    }
+    return -1;
+}
+
 }  // namespace
 
 std::string jpegMarkerProblem(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     unsigned char start[2];
     if (!in.read(reinterpret_cast<char*>(start), 2) || start[0] != kMarker || start[1] != kStartOfImage) return "";
-    // each segment takes at least 4 bytes of the file, so the walk ends at its end or at the scan
-    for (unsigned char header[4]; in.read(reinterpret_cast<char*>(header), 4);) {
-        if (header[0] != kMarker || header[1] == kStartOfScan) return "";  // libjpeg's to judge from here
-        const unsigned length = bigEndian16(header + 2);
-        if (length < 2) return "";
-        std::vector<unsigned char> segment(length - 2);
+    // each segment takes at least 2 bytes of the file, so the walk ends at its end or at the scan
+    for (int marker; (marker = nextMarker(in)) >= 0;) {
+        if (marker == kStartOfScan || marker == kEndOfImage) return "";  // libjpeg's to judge from here
+        if (marker == kTemporary || (marker >= kFirstRestart && marker <= kStartOfImage)) continue;  // no length
+        unsigned char length[2];
+        if (!in.read(reinterpret_cast<char*>(length), 2) || bigEndian16(length) < 2) return "";
+        std::vector<unsigned char> segment(bigEndian16(length) - 2);
         if (!in.read(reinterpret_cast<char*>(segment.data()), static_cast<std::streamsize>(segment.size()))) return "";
-        if (header[1] == kApp13) {
+        if (marker == kApp13) {
             if (std::string problem = iptcProblem(segment); !problem.empty()) return problem;
         }
     }

@@ -67,6 +67,12 @@ TEST_F(JpegMarkers, ARecordClaimingMoreThanItsBlockIsNamedBeforeOpenImageIoReads
     } catch (const std::runtime_error& error) {
         EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
     }
+    // libjpeg skips bytes that are no marker up to the next 0xFF, and so does the walk
+    const std::size_t segment = bytes.rfind('\xff', at);
+    ASSERT_NE(segment, std::string::npos);
+    bytes.insert(segment, "garbage");
+    std::ofstream(bad, std::ios::binary | std::ios::trunc) << bytes;
+    EXPECT_EQ(jpegMarkerProblem(bad), problem);
 }
 
 }  // namespace
