@@ -3,22 +3,17 @@
 // holds is named, a cut header is refused, other formats are not its business.
 
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "image/exr_header.h"
 #include "image/image_io.h"
+#include "io/atomic_file.h"
 #include "support/scratch_folder.h"
 
 namespace sdfwb::image {
 namespace {
-
-std::string bytesOf(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void write(const std::filesystem::path& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;
@@ -34,7 +29,7 @@ protected:
 TEST_F(ExrHeader, AFileTheWriterMadePasses) { EXPECT_EQ(exrHeaderProblem(good), ""); }
 
 TEST_F(ExrHeader, AnAttributeClaimingMoreThanTheFileIsNamedBeforeOpenExrReadsIt) {
-    std::string bytes = bytesOf(good);
+    std::string bytes = io::readTextFile(good);
     const std::size_t at = bytes.find(std::string("channels\0chlist\0", 16));
     ASSERT_NE(at, std::string::npos);
     bytes.replace(at + 16, 4, std::string("\xff\xff\xff\x70", 4));  // 1895825407 bytes
@@ -55,7 +50,7 @@ TEST_F(ExrHeader, AnAttributeClaimingMoreThanTheFileIsNamedBeforeOpenExrReadsIt)
 // the rest as the next field: a name running on once made it read a string
 // attribute of 1.9 GB from a 1.6 KB file (tests/fuzz/regressions/image).
 TEST_F(ExrHeader, ANameLongerThanOpenExrReadsIsRefused) {
-    const std::string bytes = bytesOf(good);
+    const std::string bytes = io::readTextFile(good);
     const std::size_t at = bytes.find(std::string("channels\0", 9));
     ASSERT_NE(at, std::string::npos);
     const std::string longName = "channels_named_at_greater_length_than_31";
@@ -75,7 +70,7 @@ TEST_F(ExrHeader, ANameLongerThanOpenExrReadsIsRefused) {
 }
 
 TEST_F(ExrHeader, AHeaderCutShortIsRefusedAndOtherFormatsAreLeftAlone) {
-    write(folder / "cut.exr", bytesOf(good).substr(0, 12));  // inside the first attribute's name
+    write(folder / "cut.exr", io::readTextFile(good).substr(0, 12));  // inside the first attribute's name
     EXPECT_EQ(exrHeaderProblem(folder / "cut.exr"), "its OpenEXR header is cut short");
     writeImage(folder / "picture.png", Image(4, 4));
     EXPECT_EQ(exrHeaderProblem(folder / "picture.png"), "");

@@ -3,7 +3,6 @@
 // bytes than its block holds is named, other formats are not its business.
 
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <OpenImageIO/imageio.h>
@@ -11,15 +10,11 @@
 
 #include "image/image_io.h"
 #include "image/jpeg_markers.h"
+#include "io/atomic_file.h"
 #include "support/scratch_folder.h"
 
 namespace sdfwb::image {
 namespace {
-
-std::string bytesOf(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 class JpegMarkers : public testing::Test {
 protected:
@@ -39,7 +34,7 @@ protected:
 };
 
 TEST_F(JpegMarkers, ACaptionedFilePassesAndOtherFormatsAreLeftAlone) {
-    ASSERT_NE(bytesOf(captioned).find(std::string("Photoshop 3.0\0008BIM\004\004", 20)), std::string::npos);
+    ASSERT_NE(io::readTextFile(captioned).find(std::string("Photoshop 3.0\0008BIM\004\004", 20)), std::string::npos);
     EXPECT_EQ(jpegMarkerProblem(captioned), "");
     EXPECT_NO_THROW(readImage(captioned));
     writeImage(folder / "picture.png", Image(4, 4));
@@ -50,7 +45,7 @@ TEST_F(JpegMarkers, ACaptionedFilePassesAndOtherFormatsAreLeftAlone) {
 // OpenImageIO 2.4 copies a record at the size it claims: past its block, it
 // read past the segment (tests/fuzz/regressions/image).
 TEST_F(JpegMarkers, ARecordClaimingMoreThanItsBlockIsNamedBeforeOpenImageIoReadsIt) {
-    std::string bytes = bytesOf(captioned);
+    std::string bytes = io::readTextFile(captioned);
     const std::size_t at = bytes.find(std::string("Photoshop 3.0\0008BIM", 18));
     ASSERT_NE(at, std::string::npos);
     const std::size_t record = at + 26;  // signature 14, 8BIM 4, id 2, skipped 4, size 2

@@ -3,22 +3,17 @@
 // holds is named, other formats are not its business.
 
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "image/image_io.h"
 #include "image/png_chunks.h"
+#include "io/atomic_file.h"
 #include "support/scratch_folder.h"
 
 namespace sdfwb::image {
 namespace {
-
-std::string bytesOf(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 class PngChunks : public testing::Test {
 protected:
@@ -37,7 +32,7 @@ TEST_F(PngChunks, AFileTheWriterMadePassesAndOtherFormatsAreLeftAlone) {
 // libpng allocates a text chunk at its claimed length before reading it: an
 // 838-byte file once took 1.6 GB (tests/fuzz/regressions/image).
 TEST_F(PngChunks, AChunkClaimingMoreThanTheFileIsNamedBeforeLibpngReadsIt) {
-    std::string bytes = bytesOf(good);
+    std::string bytes = io::readTextFile(good);
     const std::size_t iend = bytes.find("IEND");
     ASSERT_NE(iend, std::string::npos);
     // a tEXt chunk of 1634811467 claimed bytes in front of IEND, holding 4
