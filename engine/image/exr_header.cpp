@@ -13,15 +13,10 @@ namespace {
 
 constexpr std::uint32_t kMagic = 20000630;        // 0x762f3101, little endian
 constexpr std::uint32_t kMultipartFlag = 0x1000;  // in the version field: headers follow each other
-constexpr std::uint32_t kLongNamesFlag = 0x400;   // in the version field: names of up to 255 bytes
-// The longest attribute name or type OpenEXR reads (Imf::Header::readFrom).
-// It stops reading a name there whether or not its NUL has come, and reads
-// the rest as the next field: a 1.6 KB file whose name ran on read a string
-// attribute of 1.9 GB. Such a name makes the file unreadable here.
-constexpr std::size_t kMaxShortName = 31;
-constexpr std::size_t kMaxLongName = 255;
-// A channel name's limit whatever the flag (Imf::ChannelListAttribute).
-constexpr std::size_t kMaxChannelName = 255;
+// The longest name OpenEXR reads, of an attribute, a type or a channel
+// (Imf::Name::MAX_LENGTH, whatever the version field's long-names flag says).
+// It refuses a longer one itself, without allocating.
+constexpr std::size_t kMaxName = 255;
 // After its name, a channel is a pixel type, a linear flag, 3 bytes of
 // padding and two sampling rates.
 constexpr std::size_t kChannelFieldBytes = 16;
@@ -68,12 +63,12 @@ std::uint32_t littleEndian32(const unsigned char* b) {
 
 enum class NameRead { Read, TooLong, CutShort };
 
-// A NUL-terminated string of at most `longest` bytes.
-NameRead readName(std::istream& in, std::size_t longest, std::string& name) {
+// A NUL-terminated string of at most kMaxName bytes.
+NameRead readName(std::istream& in, std::string& name) {
     name.clear();
     for (char c; in.get(c);) {
         if (c == '\0') return NameRead::Read;
-        if (name.size() == longest) return NameRead::TooLong;
+        if (name.size() == kMaxName) return NameRead::TooLong;
         name.push_back(c);
     }
     return NameRead::CutShort;
@@ -85,7 +80,7 @@ bool channelListFills(const std::vector<unsigned char>& value) {
     for (std::size_t at = 0; at < value.size();) {
         std::size_t length = 0;
         while (at + length < value.size() && value[at + length] != 0) ++length;
-        if (at + length == value.size() || length > kMaxChannelName) return false;
+        if (at + length == value.size() || length > kMaxName) return false;
         if (length == 0) return at + 1 == value.size();
         at += length + 1 + kChannelFieldBytes;
     }
@@ -129,6 +124,8 @@ std::string valueProblem(std::string_view type, std::uint32_t bytes, std::istrea
         in.seekg(static_cast<std::streamoff>(bytes - 8), std::ios::cur);
         return "";
     }
+    // OpenEXR 3.1 reads an ID manifest 4 bytes past its size; textures need none
+    if (type == "idmanifest") return "is an ID manifest, which OpenEXR 3.1 reads past its size";
     if (type == "floatvector" && bytes % 4 != 0) return "holds a floatvector of " + std::to_string(bytes) + " bytes";
     if (type != "chlist" && type != "stringvector") {
         in.seekg(static_cast<std::streamoff>(bytes), std::ios::cur);
@@ -149,14 +146,14 @@ std::string exrHeaderProblem(const std::filesystem::path& path) {
     unsigned char start[8];
     if (error || !in.read(reinterpret_cast<char*>(start), 8) || littleEndian32(start) != kMagic) return "";
     const bool multipart = (littleEndian32(start + 4) & kMultipartFlag) != 0;
-    const std::size_t longest = (littleEndian32(start + 4) & kLongNamesFlag) != 0 ? kMaxLongName : kMaxShortName;
     const std::string tooShort = "its OpenEXR header is cut short";
     const std::string tooLong =
-        "its OpenEXR header has an attribute name or type longer than " + std::to_string(longest) + " bytes";
+        "its OpenEXR header has an attribute name or type longer than " + std::to_string(kMaxName) + " bytes";
+    auto attribute = [](const std::string& name) { return "its OpenEXR header attribute " + io::quoted(name); };
     std::string name, type;
-    // each attribute takes at least 6 bytes of the file, so the walk ends
+    // each step reads at least one byte of the file, so the walk ends
     for (bool headerStart = true;;) {
-        if (NameRead read = readName(in, longest, name); read != NameRead::Read) {
+        if (NameRead read = readName(in, name); read != NameRead::Read) {
             return read == NameRead::TooLong ? tooLong : tooShort;
         }
         if (name.empty()) {
@@ -167,19 +164,18 @@ std::string exrHeaderProblem(const std::filesystem::path& path) {
         }
         headerStart = false;
         unsigned char size[4];
-        if (NameRead read = readName(in, longest, type); read != NameRead::Read) {
+        if (NameRead read = readName(in, type); read != NameRead::Read) {
             return read == NameRead::TooLong ? tooLong : tooShort;
         }
         if (!in.read(reinterpret_cast<char*>(size), 4)) return tooShort;
         const std::uint32_t bytes = littleEndian32(size);
         const std::uintmax_t position = static_cast<std::uintmax_t>(in.tellg());
         if (bytes > 0x7fffffffu || bytes > fileSize - position) {
-            return "its OpenEXR header attribute " + io::quoted(name) + " claims " +
-                   std::to_string(static_cast<std::int32_t>(bytes)) + " bytes, past the file's end (" +
-                   std::to_string(fileSize) + " bytes)";
+            return attribute(name) + " claims " + std::to_string(static_cast<std::int32_t>(bytes)) +
+                   " bytes, past the file's end (" + std::to_string(fileSize) + " bytes)";
         }
         if (std::string problem = valueProblem(type, bytes, in); !problem.empty()) {
-            return "its OpenEXR header attribute " + io::quoted(name) + " " + problem;
+            return attribute(name) + " " + problem;
         }
     }
 }
