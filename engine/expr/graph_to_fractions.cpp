@@ -59,7 +59,12 @@ Fraction GraphToFractions::convert(NodeId root, SourceLocation rootWhere) {
     const std::string& name = graph_.variables()[graph_.node(root).index];
     throw Error(rootWhere, options_.unmappedVariable(name));
   }
-  return arithmetic_.cancel(*values[root]);
+  try {
+      // cancelling divides out factors, products that count against the budget too
+      return arithmetic_.cancel(*values[root]);
+  } catch (const TooLargeToExpand& error) {
+      throw Error(rootWhere, error.what());
+  }
 }
 
 std::pair<algebra::Polynomial, algebra::Polynomial> GraphToFractions::convertToQuotient(NodeId root,
