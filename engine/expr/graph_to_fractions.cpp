@@ -8,6 +8,18 @@ std::string notRational(const Origin& origin) {
   return "'" + std::string(origin.construct) + "' is not a polynomial or rational function";
 }
 
+// Runs a step on the whole converted formula (cancelling its factors,
+// expanding it): products that count against the budget as the conversion's
+// own do, so running past it is reported at the formula's location.
+template <class Step>
+auto atRoot(SourceLocation rootWhere, Step step) {
+  try {
+    return step();
+  } catch (const TooLargeToExpand& error) {
+    throw Error(rootWhere, error.what());
+  }
+}
+
 }  // namespace
 
 GraphToFractions::GraphToFractions(const Graph& graph, FractionArithmetic& arithmetic, Options options)
@@ -59,22 +71,13 @@ Fraction GraphToFractions::convert(NodeId root, SourceLocation rootWhere) {
     const std::string& name = graph_.variables()[graph_.node(root).index];
     throw Error(rootWhere, options_.unmappedVariable(name));
   }
-  try {
-      // cancelling divides out factors, products that count against the budget too
-      return arithmetic_.cancel(*values[root]);
-  } catch (const TooLargeToExpand& error) {
-      throw Error(rootWhere, error.what());
-  }
+  return atRoot(rootWhere, [&] { return arithmetic_.cancel(*values[root]); });
 }
 
 std::pair<algebra::Polynomial, algebra::Polynomial> GraphToFractions::convertToQuotient(NodeId root,
                                                                                        SourceLocation rootWhere) {
   const Fraction value = convert(root, rootWhere);
-  try {
-    return arithmetic_.expand(value);
-  } catch (const TooLargeToExpand& error) {
-    throw Error(rootWhere, error.what());
-  }
+  return atRoot(rootWhere, [&] { return arithmetic_.expand(value); });
 }
 
 }  // namespace sdfwb::expr
