@@ -3,7 +3,6 @@
 // holds is named, a cut header is refused, other formats are not its business.
 
 #include <cstdint>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,10 +14,6 @@
 
 namespace sdfwb::image {
 namespace {
-
-void write(const std::filesystem::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
 
 std::string littleEndian32(std::uint32_t value) {
     std::string bytes;
@@ -45,7 +40,7 @@ TEST_F(ExrHeader, AnAttributeClaimingMoreThanTheFileIsNamedBeforeOpenExrReadsIt)
     const std::size_t at = bytes.find(std::string("channels\0chlist\0", 16));
     ASSERT_NE(at, std::string::npos);
     bytes.replace(at + 16, 4, std::string("\xff\xff\xff\x70", 4));  // 1895825407 bytes
-    write(folder / "bad.exr", bytes);
+    io::writeTextAtomically(folder / "bad.exr", bytes);
     std::string problem = exrHeaderProblem(folder / "bad.exr");
     EXPECT_EQ(
         problem.rfind("its OpenEXR header attribute \"channels\" claims 1895825407 bytes, past the file's end", 0), 0u)
@@ -67,7 +62,7 @@ TEST_F(ExrHeader, NamesOfUpTo255BytesPassAndLongerOnesAreRefused) {
     auto problemRenamed = [&](std::size_t length) {
         std::string renamed = bytes;
         renamed.replace(at, 8, std::string(length, 'n'));
-        write(folder / "renamed.exr", renamed);
+        io::writeTextAtomically(folder / "renamed.exr", renamed);
         return exrHeaderProblem(folder / "renamed.exr");
     };
     EXPECT_EQ(problemRenamed(40), "");
@@ -88,7 +83,7 @@ TEST_F(ExrHeader, AValueOpenExrReadsAtAnotherSizeThanItsFieldIsRefused) {
     for (int change : {-3, 3}) {
         std::string changed = bytes;
         changed[at + channels.size()] = static_cast<char>(listBytes + change);
-        write(folder / "changed_list.exr", changed);
+        io::writeTextAtomically(folder / "changed_list.exr", changed);
         EXPECT_EQ(exrHeaderProblem(folder / "changed_list.exr"),
                   "its OpenEXR header attribute \"channels\" does not end where its size (" +
                       std::to_string(listBytes + change) + " bytes) says");
@@ -98,7 +93,7 @@ TEST_F(ExrHeader, AValueOpenExrReadsAtAnotherSizeThanItsFieldIsRefused) {
     ASSERT_NE(windowAt, std::string::npos);
     std::string longBox = bytes;
     longBox[windowAt + window.size() - 1] = '\x11';
-    write(folder / "long_box.exr", longBox);
+    io::writeTextAtomically(folder / "long_box.exr", longBox);
     EXPECT_EQ(exrHeaderProblem(folder / "long_box.exr"),
               "its OpenEXR header attribute \"dataWindow\" claims 17 bytes for a box2i, which OpenEXR reads as 16");
 }
@@ -109,7 +104,8 @@ TEST_F(ExrHeader, AValueOpenExrReadsAtAnotherSizeThanItsFieldIsRefused) {
 TEST_F(ExrHeader, ValuesOfVariableSizeMustFillTheirSize) {
     const std::string bytes = io::readTextFile(good);
     auto withAttribute = [&](const std::string& name, const std::string& type, const std::string& value) {
-        write(folder / "added.exr", bytes.substr(0, 8) + attribute(name, type, value) + bytes.substr(8));
+        io::writeTextAtomically(folder / "added.exr",
+                                bytes.substr(0, 8) + attribute(name, type, value) + bytes.substr(8));
         return exrHeaderProblem(folder / "added.exr");
     };
     const std::string two = littleEndian32(2);
@@ -134,7 +130,7 @@ TEST_F(ExrHeader, EveryHeaderOfAMultipartFileIsWalked) {
     const std::string start = littleEndian32(20000630) + littleEndian32(2 | 0x1000);
     const std::string first = attribute("name", "string", "one") + std::string(1, '\0');
     auto problemWithSecond = [&](const std::string& second) {
-        write(folder / "parts.exr", start + first + second + std::string(2, '\0'));
+        io::writeTextAtomically(folder / "parts.exr", start + first + second + std::string(2, '\0'));
         return exrHeaderProblem(folder / "parts.exr");
     };
     EXPECT_EQ(problemWithSecond(attribute("box", "box2i", std::string(16, '\0'))), "");
@@ -143,7 +139,8 @@ TEST_F(ExrHeader, EveryHeaderOfAMultipartFileIsWalked) {
 }
 
 TEST_F(ExrHeader, AHeaderCutShortIsRefusedAndOtherFormatsAreLeftAlone) {
-    write(folder / "cut.exr", io::readTextFile(good).substr(0, 12));  // inside the first attribute's name
+    io::writeTextAtomically(folder / "cut.exr",
+                            io::readTextFile(good).substr(0, 12));  // inside the first attribute's name
     EXPECT_EQ(exrHeaderProblem(folder / "cut.exr"), "its OpenEXR header is cut short");
     writeImage(folder / "picture.png", Image(4, 4));
     EXPECT_EQ(exrHeaderProblem(folder / "picture.png"), "");
